@@ -1,0 +1,239 @@
+#include "CaseDictionaries.hpp"
+
+#include "DictionaryParser.hpp"
+#include "InputError.hpp"
+#include "Suggest.hpp"
+
+namespace sph
+{
+
+namespace
+{
+
+const std::map<std::string, std::string>& knownFiles()
+{
+    static const std::map<std::string, std::string> files{
+        {"controlDict", "system/controlDict"},     {"sphSchemes", "system/sphSchemes"},
+        {"particlesDict", "system/particlesDict"}, {"studyDict", "system/studyDict"},
+        {"bodies", "constant/bodies"}};
+    return files;
+}
+
+std::vector<std::string> split(const std::string& path)
+{
+    std::vector<std::string> parts;
+    std::string current;
+    for (char c : path)
+    {
+        if (c == '.' || c == '/')
+        {
+            parts.push_back(current);
+            current.clear();
+        }
+        else
+        {
+            current += c;
+        }
+    }
+    parts.push_back(current);
+    return parts;
+}
+
+} // namespace
+
+CaseDictionaries::CaseDictionaries(std::filesystem::path caseDir) : caseDir_(std::move(caseDir))
+{
+}
+
+std::string CaseDictionaries::relativePath(const std::string& name)
+{
+    const auto it = knownFiles().find(name);
+    if (it == knownFiles().end())
+    {
+        throw std::logic_error("unknown case dictionary '" + name + "'");
+    }
+    return it->second;
+}
+
+std::string CaseDictionaries::caseName() const
+{
+    std::error_code ec;
+    const auto path = std::filesystem::weakly_canonical(std::filesystem::absolute(caseDir_), ec);
+    const std::string name = path.filename().string();
+    return name.empty() ? "case" : name;
+}
+
+void CaseDictionaries::read(const std::vector<std::string>& required,
+                            const std::vector<std::string>& optional)
+{
+    const auto readOne = [&](const std::string& name, bool mustExist) {
+        const std::string relative = relativePath(name);
+        const std::filesystem::path path = caseDir_ / relative;
+        if (!std::filesystem::exists(path))
+        {
+            if (!mustExist)
+            {
+                return;
+            }
+            throw InputError("cannot find " + relative + " in the case folder '" +
+                                 caseDir_.string() + "'",
+                             {"A case holds system/controlDict, system/sphSchemes, "
+                              "system/particlesDict and constant/bodies.",
+                              "Point -case at a case folder, or copy a tutorial case to start "
+                              "from (tutorials/)."});
+        }
+        files_[name] = DictionaryParser::parseFile(path, relative);
+        order_.push_back(name);
+    };
+    for (const auto& name : required)
+    {
+        readOne(name, true);
+    }
+    for (const auto& name : optional)
+    {
+        readOne(name, false);
+    }
+}
+
+const Dictionary& CaseDictionaries::get(const std::string& name) const
+{
+    const auto it = files_.find(name);
+    if (it == files_.end())
+    {
+        throw std::logic_error("case dictionary '" + name + "' was not read");
+    }
+    return *it->second;
+}
+
+void CaseDictionaries::applySets(const std::vector<std::string>& sets)
+{
+    for (const std::string& argument : sets)
+    {
+        const std::string line = "-set " + argument;
+        auto source = std::make_shared<const SourceText>("command line", line);
+        const auto at = [&](std::size_t offset, std::size_t length) {
+            return SourceLocation{source, 1, static_cast<int>(5 + offset + 1),
+                                  static_cast<int>(std::max<std::size_t>(1, length))};
+        };
+        const std::size_t equals = argument.find('=');
+        if (equals == std::string::npos || equals == 0)
+        {
+            throw InputError(at(0, argument.size()), "-set needs the form path.to.key=value",
+                             {"Example: -set endTime=1e-3 or -set stabilisation.type=gradF"});
+        }
+        const std::string path = argument.substr(0, equals);
+        const std::string valueText = argument.substr(equals + 1);
+        std::vector<std::string> parts = split(path);
+        for (const auto& part : parts)
+        {
+            if (part.empty())
+            {
+                throw InputError(at(0, path.size()), "empty key name in -set path '" + path + "'");
+            }
+        }
+        std::vector<Item> items =
+            DictionaryParser::parseValue(source, valueText, static_cast<int>(5 + equals + 2));
+
+        // Which file?
+        std::string file;
+        if (files_.count(parts.front()) && parts.size() > 1)
+        {
+            file = parts.front();
+            parts.erase(parts.begin());
+        }
+        else
+        {
+            std::vector<std::string> holders;
+            for (const auto& name : order_)
+            {
+                if (files_.at(name)->find(parts.front()))
+                {
+                    holders.push_back(name);
+                }
+            }
+            if (holders.size() > 1)
+            {
+                throw InputError(at(0, parts.front().size()),
+                                 "-set key '" + parts.front() + "' is ambiguous: it is in " +
+                                     joinSorted(holders),
+                                 {"Prefix the file: -set " + holders.front() + "." + argument});
+            }
+            if (holders.empty())
+            {
+                std::vector<std::string> topKeys;
+                std::vector<std::string> fileNames;
+                for (const auto& name : order_)
+                {
+                    fileNames.push_back(name);
+                    for (const auto& key : files_.at(name)->keys())
+                    {
+                        topKeys.push_back(key);
+                    }
+                }
+                std::vector<std::string> notes{
+                    "To add a new top-level key, prefix its file (" + joinSorted(fileNames) +
+                    "): -set controlDict." + argument};
+                const std::string hint = didYouMean(parts.front(), topKeys);
+                if (!hint.empty())
+                {
+                    notes.insert(notes.begin(), hint);
+                }
+                throw InputError(at(0, parts.front().size()),
+                                 "-set: no case dictionary has a top-level key '" + parts.front() +
+                                     "'",
+                                 notes);
+            }
+            file = holders.front();
+        }
+
+        Dictionary* dict = files_.at(file).get();
+        std::size_t offset = path.size() - [&] {
+            std::size_t length = 0;
+            for (std::size_t i = 0; i < parts.size(); ++i)
+            {
+                length += parts[i].size() + (i ? 1 : 0);
+            }
+            return length;
+        }();
+        for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+        {
+            Entry* entry = dict->find(parts[i]);
+            if (!entry || !entry->isDict())
+            {
+                std::vector<std::string> notes;
+                const std::string hint = didYouMean(parts[i], dict->keys());
+                if (!hint.empty())
+                {
+                    notes.push_back(hint);
+                }
+                notes.push_back("'" + dict->displayName() + "' has: " + joinSorted(dict->keys()));
+                throw InputError(at(offset, parts[i].size()),
+                                 entry ? "-set: '" + parts[i] + "' is not a dictionary"
+                                       : "-set: '" + dict->displayName() + "' has no sub-dictionary '" +
+                                             parts[i] + "'",
+                                 notes);
+            }
+            offset += parts[i].size() + 1;
+            dict = &entry->dict();
+        }
+        const std::string& key = parts.back();
+        if (Entry* entry = dict->find(key))
+        {
+            if (entry->isDict())
+            {
+                throw InputError(at(offset, key.size()),
+                                 "-set: '" + key + "' is a dictionary; set one of its keys",
+                                 {"For example -set " + path + "." +
+                                  (entry->dict().empty() ? "type" : entry->dict().keys().front()) +
+                                  "=..."});
+            }
+            entry->setItems(std::move(items));
+        }
+        else
+        {
+            dict->add(Entry(key, at(offset, key.size()), std::move(items)));
+        }
+    }
+}
+
+} // namespace sph

@@ -1,0 +1,204 @@
+#include "CommandLine.hpp"
+
+#include "InputError.hpp"
+#include "Suggest.hpp"
+
+#include <iostream>
+#include <sstream>
+
+#ifndef SPH_VERSION
+#define SPH_VERSION "unknown"
+#endif
+
+namespace po = boost::program_options;
+
+namespace sph
+{
+
+const char* projectVersion()
+{
+    return SPH_VERSION;
+}
+
+CommandLine::CommandLine(std::string program, std::string purpose)
+    : program_(std::move(program)), purpose_(std::move(purpose)), extra_("Options of " + program_)
+{
+    InputError::setProgramName(program_);
+}
+
+void CommandLine::enableModelOptions(bool listTypes, bool dryRun, bool set)
+{
+    withListTypes_ = listTypes;
+    withDryRun_ = dryRun;
+    withSet_ = set;
+}
+
+namespace
+{
+
+po::options_description commonOptions(bool listTypes, bool dryRun, bool set)
+{
+    po::options_description common("Common options");
+    common.add_options()("case", po::value<std::string>()->value_name("DIR"),
+                         "case folder (default: the current folder)");
+    if (set)
+    {
+        common.add_options()(
+            "set", po::value<std::vector<std::string>>()->composing()->value_name("KEY=VALUE"),
+            "override a dictionary entry after reading, e.g. -set endTime=1e-3 or "
+            "-set stabilisation.type=gradF (repeatable; prefix a file name to add a new "
+            "top-level key: -set controlDict.startFrom=latestTime)");
+    }
+    if (listTypes)
+    {
+        common.add_options()("listTypes",
+                             "list every registered model with its description and keys; "
+                             "optionally only one family: -listTypes material");
+    }
+    if (dryRun)
+    {
+        common.add_options()("dryRun",
+                             "read and validate every dictionary, build every selected model, "
+                             "then exit 0 without running");
+    }
+    common.add_options()("help", "print this help and exit")("version",
+                                                             "print the version and exit");
+    return common;
+}
+
+} // namespace
+
+std::string CommandLine::usage() const
+{
+    std::ostringstream out;
+    out << program_ << " " << projectVersion() << ": " << purpose_ << "\n\n"
+        << "Usage: " << program_ << " [options]\n"
+        << "Options take one dash, e.g. -case tutorials/bar1D/dykaBar (two dashes work too).\n\n"
+        << commonOptions(withListTypes_, withDryRun_, withSet_);
+    if (!extra_.options().empty())
+    {
+        out << "\n" << extra_;
+    }
+    return out.str();
+}
+
+bool CommandLine::parse(int argc, const char* const* argv)
+{
+    invocation_.clear();
+    std::vector<int> columns; // 1-based column of each argument in the invocation line
+    for (int i = 0; i < argc; ++i)
+    {
+        if (i > 0)
+        {
+            invocation_ += ' ';
+        }
+        columns.push_back(static_cast<int>(invocation_.size()) + 1);
+        invocation_ += argv[i];
+    }
+    auto source = std::make_shared<const SourceText>("command line", invocation_);
+    const auto locate = [&](const std::string& text) {
+        for (int i = 1; i < argc; ++i)
+        {
+            if (std::string(argv[i]).find(text) != std::string::npos)
+            {
+                return SourceLocation{source, 1, columns[static_cast<std::size_t>(i)],
+                                      static_cast<int>(std::string(argv[i]).size())};
+            }
+        }
+        return SourceLocation{source, 1, 1, 1};
+    };
+
+    po::options_description all;
+    all.add(commonOptions(withListTypes_, withDryRun_, withSet_)).add(extra_);
+    po::options_description hidden;
+    hidden.add_options()("positional", po::value<std::vector<std::string>>());
+    po::options_description parsing;
+    parsing.add(all).add(hidden);
+    po::positional_options_description positional;
+    positional.add("positional", -1);
+
+    const int style = (po::command_line_style::unix_style | po::command_line_style::allow_long_disguise) &
+                      ~po::command_line_style::allow_guessing;
+    try
+    {
+        po::store(po::command_line_parser(argc, argv)
+                      .options(parsing)
+                      .positional(positional)
+                      .style(style)
+                      .run(),
+                  values_);
+        po::notify(values_);
+    }
+    catch (const po::unknown_option& error)
+    {
+        std::vector<std::string> names;
+        for (const auto& option : all.options())
+        {
+            names.push_back(option->long_name());
+        }
+        std::string name = error.get_option_name();
+        while (!name.empty() && name.front() == '-')
+        {
+            name.erase(0, 1);
+        }
+        std::vector<std::string> notes{"Run '" + program_ + " -help' for the options."};
+        const std::string hint = didYouMean(name, names);
+        if (!hint.empty())
+        {
+            notes.insert(notes.begin(), hint);
+        }
+        throw InputError(locate(error.get_option_name()), "unknown option '-" + name + "'", notes);
+    }
+    catch (const po::error& error)
+    {
+        throw InputError(SourceLocation{source, 1, 1, 1}, error.what(),
+                         {"Run '" + program_ + " -help' for the options."});
+    }
+
+    if (values_.count("help"))
+    {
+        std::cout << usage();
+        return false;
+    }
+    if (values_.count("version"))
+    {
+        std::cout << program_ << " " << projectVersion() << "\n";
+        return false;
+    }
+    if (values_.count("case"))
+    {
+        caseDir_ = values_["case"].as<std::string>();
+    }
+    if (values_.count("set"))
+    {
+        sets_ = values_["set"].as<std::vector<std::string>>();
+    }
+    listTypes_ = values_.count("listTypes") > 0;
+    dryRun_ = values_.count("dryRun") > 0;
+    if (values_.count("positional"))
+    {
+        const auto& words = values_["positional"].as<std::vector<std::string>>();
+        if (listTypes_ && words.size() == 1)
+        {
+            listFamily_ = words.front();
+        }
+        else
+        {
+            const std::string& first = listTypes_ ? words[1] : words[0];
+            throw InputError(locate(first), "unexpected argument '" + first + "'",
+                             {"Options start with '-' (e.g. -case DIR); -listTypes takes at most "
+                              "one family name.",
+                              "Run '" + program_ + " -help' for the options."});
+        }
+    }
+    if (!std::filesystem::is_directory(caseDir_) && !listTypes_)
+    {
+        throw InputError(locate(caseDir_.string()),
+                         "the case folder '" + caseDir_.string() + "' does not exist",
+                         {"Give an existing folder with -case DIR (a case holds system/ and "
+                          "constant/)."});
+    }
+    return true;
+}
+
+} // namespace sph

@@ -1,0 +1,90 @@
+#include "core/CaseDictionaries.hpp"
+#include "support/TestSupport.hpp"
+
+using namespace sph;
+using sph::test::requireInputError;
+
+namespace
+{
+
+void writeCase(const sph::test::TempDir& dir)
+{
+    dir.write("system/controlDict", "endTime 5e-3;\ncourant 0.01;\n");
+    dir.write("system/sphSchemes",
+              "dimension 1;\nstabilisation { type none; }\nkernel { type cubicSpline; }\n");
+    dir.write("constant/bodies", "bar { material { type linearElastic; E 3e4; } }\n");
+}
+
+} // namespace
+
+TEST_CASE("set overrides replace, adds and finds the right file", "[case]")
+{
+    sph::test::TempDir dir;
+    writeCase(dir);
+    CaseDictionaries dicts(dir.path());
+    dicts.read({"controlDict", "sphSchemes", "bodies"});
+    dicts.applySets({"endTime=1e-3", "stabilisation.type=gradF", "stabilisation.beta=(0.1)",
+                     "controlDict.startFrom=latestTime", "bar.material.E=2e4",
+                     "sphSchemes/kernel/hOverDx=2"});
+    const Dictionary& control = dicts.get("controlDict");
+    CHECK(control.find("endTime")->items()[0].number() == 1e-3);
+    CHECK(control.find("startFrom")->items()[0].text() == "latestTime");
+    const Dictionary& schemes = dicts.get("sphSchemes");
+    CHECK(schemes.find("stabilisation")->dict().find("type")->items()[0].text() == "gradF");
+    CHECK(schemes.find("stabilisation")->dict().find("beta")->items()[0].isList());
+    CHECK(schemes.find("kernel")->dict().find("hOverDx")->items()[0].number() == 2);
+    CHECK(dicts.get("bodies").find("bar")->dict().find("material")->dict().find("E")->items()[0].number() == 2e4);
+    // The overridden value points into the command line.
+    CHECK(control.find("endTime")->items()[0].location().fileName() == "command line");
+    CHECK(control.find("endTime")->items()[0].location().column == 14);
+}
+
+TEST_CASE("set override errors point into the command line", "[case][errors]")
+{
+    sph::test::TempDir dir;
+    writeCase(dir);
+    CaseDictionaries dicts(dir.path());
+    dicts.read({"controlDict", "sphSchemes", "bodies"});
+    SECTION("no '='")
+    {
+        requireInputError([&] { dicts.applySets({"endTime"}); }, 1, 6, "-set needs the form");
+    }
+    SECTION("unknown top-level key with suggestion and the file-prefix hint")
+    {
+        const std::string text = requireInputError([&] { dicts.applySets({"endTme=1"}); }, 1, 6,
+                                                   "no case dictionary has a top-level key 'endTme'");
+        CHECK_THAT(text, Catch::Contains("Did you mean 'endTime'?"));
+        CHECK_THAT(text, Catch::Contains("-set controlDict.endTme=1"));
+    }
+    SECTION("missing intermediate dictionary")
+    {
+        const std::string text = requireInputError(
+            [&] { dicts.applySets({"stabilsation.type=gradF"}); }, 1, 6, "no case dictionary");
+        CHECK_THAT(text, Catch::Contains("Did you mean 'stabilisation'?"));
+    }
+    SECTION("setting a whole dictionary")
+    {
+        requireInputError([&] { dicts.applySets({"stabilisation=gradF"}); }, 1, 6,
+                          "'stabilisation' is a dictionary");
+    }
+    SECTION("bad value syntax")
+    {
+        requireInputError([&] { dicts.applySets({"endTime=(1"}); }, 1, 14, "unterminated '('");
+    }
+}
+
+TEST_CASE("a missing case file says what a case holds", "[case][errors]")
+{
+    sph::test::TempDir dir;
+    CaseDictionaries dicts(dir.path());
+    try
+    {
+        dicts.read({"controlDict"});
+        FAIL("no error");
+    }
+    catch (const InputError& error)
+    {
+        CHECK_THAT(error.message(), Catch::Contains("cannot find system/controlDict"));
+        CHECK_THAT(error.what(), Catch::Contains("copy a tutorial case"));
+    }
+}
