@@ -76,4 +76,9 @@ void loadModelLibraries()
     (void)loaded;
 }
 
+void loadLibrary(const std::string& name)
+{
+    LibraryLoader::load(name, SourceLocation{}, std::filesystem::current_path());
+}
+
 } // namespace sph::test

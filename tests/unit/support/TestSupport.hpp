@@ -42,5 +42,7 @@ std::filesystem::path buildDir();
 
 // Loads the model libraries the way the solver does (once per test process).
 void loadModelLibraries();
+// Loads one model library by name (e.g. "libsphMaterials.so"), as a case's `libs` would.
+void loadLibrary(const std::string& name);
 
 } // namespace sph::test

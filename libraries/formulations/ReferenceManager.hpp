@@ -1,0 +1,109 @@
+#pragma once
+// Owns the reference configuration and moves it when the formulation says so (spec §4):
+//   x^r ← x,  F^r ← F (= f F^r),  V^r ← det(F) V0,  K ← G f^{-1} (schemes that carry it),
+//   then neighbours, kernels, corrected gradients and the scheme's own data are rebuilt.
+
+#include "formulations/Formulation.hpp"
+#include "stabilisation/Stabilisation.hpp"
+
+namespace sph
+{
+
+template <int D>
+class ReferenceManager
+{
+public:
+    ReferenceManager(const Formulation<D>& formulation, Stabilisation<D>& scheme,
+                     const Kernel& kernel)
+        : formulation_(formulation), scheme_(scheme), kernel_(kernel)
+    {
+    }
+
+    ReferenceConfiguration<D>& reference() { return ref_; }
+    const ReferenceConfiguration<D>& reference() const { return ref_; }
+    // K is only needed when the scheme uses it and the reference moves (TL: K = 0 always).
+    bool carriesK() const
+    {
+        return scheme_.carriesReferenceGradient() && formulation_.updatesReference();
+    }
+
+    // x^r = X, V^r = V0, F^r = I; builds everything. `status` names a singular particle.
+    ForceStatus initialise(const ParticleSet<D>& particles)
+    {
+        ref_.setInitial(particles, carriesK());
+        ref_.updateStep = 0;
+        return rebuild(particles.body);
+    }
+
+    // Restores a saved reference configuration (restart) and rebuilds what depends on it.
+    ForceStatus restore(const ParticleSet<D>& particles, ReferenceConfiguration<D> saved)
+    {
+        ref_ = std::move(saved);
+        if (!carriesK())
+        {
+            ref_.K.clear();
+        }
+        else if (ref_.K.size() != particles.size())
+        {
+            ref_.K.assign(particles.size(), Tensor3<D>::zero());
+        }
+        return rebuild(particles.body);
+    }
+
+    // Moves the reference configuration to the current positions when due. Returns whether it
+    // moved; a failure (det F <= 0 at the move) is reported in `status`.
+    bool updateIfDue(long step, const ParticleSet<D>& particles, ForceStatus& status)
+    {
+        if (!formulation_.updateDue(step, ref_.updateStep))
+        {
+            return false;
+        }
+        std::vector<Mat<D>> F;
+        std::vector<Tensor3<D>> K;
+        status = scheme_.referenceUpdate(particles.x, ref_, F, carriesK() ? &K : nullptr);
+        if (!status.ok())
+        {
+            return false;
+        }
+        ref_.x = particles.x;
+        for (std::size_t a = 0; a < F.size(); ++a)
+        {
+            ref_.V[a] = particles.V0[a] * F[a].determinant();
+        }
+        ref_.F = std::move(F);
+        if (carriesK())
+        {
+            ref_.K = std::move(K);
+        }
+        ref_.updateStep = step;
+        status = rebuild(particles.body);
+        return true;
+    }
+
+private:
+    ForceStatus rebuild(const std::vector<int>& body)
+    {
+        ForceStatus status;
+        long bad = ref_.rebuild(kernel_, body, scheme_.searchRadius(kernel_));
+        if (bad >= 0)
+        {
+            status.badParticle = bad;
+            status.badQuantity = "corrected-gradient matrix M (too few neighbours in x^r)";
+            return status;
+        }
+        bad = scheme_.prepare(ref_);
+        if (bad >= 0)
+        {
+            status.badParticle = bad;
+            status.badQuantity = "least-squares matrix Z (too few neighbours in x^r)";
+        }
+        return status;
+    }
+
+    const Formulation<D>& formulation_;
+    Stabilisation<D>& scheme_;
+    const Kernel& kernel_;
+    ReferenceConfiguration<D> ref_;
+};
+
+} // namespace sph

@@ -1,0 +1,28 @@
+// `totalLagrangian`: CSPH in the initial configuration (Bonet & Kulasegaram 2000; spec §3).
+// x^r = X, F^r = I for the whole run; neighbours, kernels and corrected gradients are built
+// once. Keys: none.
+#include "formulations/Formulation.hpp"
+
+namespace sph
+{
+
+template <int D>
+class TotalLagrangian : public Formulation<D>
+{
+public:
+    static std::string description()
+    {
+        return "Total-Lagrangian CSPH: kernels and neighbours fixed in the initial "
+               "configuration, never updated (spec §3).";
+    }
+    static Schema schema() { return Schema(); }
+    TotalLagrangian(const Params&, const typename Formulation<D>::Args&) {}
+
+    bool updatesReference() const override { return false; }
+    bool updateDue(long, long) const override { return false; }
+    std::string summary() const override { return "totalLagrangian"; }
+};
+
+SPH_REGISTER_DIM_MODEL(Formulation, TotalLagrangian, "totalLagrangian");
+
+} // namespace sph

@@ -1,0 +1,135 @@
+#pragma once
+// Hyperelastic materials: strain energy Ψ(F) per unit initial volume and the first
+// Piola-Kirchhoff stress P = ∂Ψ/∂F (spec §8), runtime-selectable per body in constant/bodies:
+//
+//   material { type neoHookean; mu 0.3571e6; kappa 1.67e6; rho 1000; }
+//
+// Keys common to every material:
+//   rho | initial density ρ0 [kg/m^3] (in 1D: mass per unit length) | required
+//
+// 1D is a bar (uniaxial), 2D is plane strain, 3D is full. The time step uses waveSpeed(F):
+// the largest longitudinal wave speed in the reference configuration at the current F.
+
+#include "core/Registry.hpp"
+#include "particles/Types.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+
+namespace sph
+{
+
+template <int D>
+class Material
+{
+public:
+    static constexpr const char* family = "material";
+    static constexpr int dimension = D;
+    struct Args
+    {
+    };
+
+    virtual ~Material() = default;
+
+    double density() const { return rho_; }
+    virtual double energy(const Mat<D>& F) const = 0;
+    virtual Mat<D> stress(const Mat<D>& F) const = 0;
+    // P[i] = P(F[i]) and, when psi is not null, psi[i] = Ψ(F[i]), for i < n.
+    virtual void evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n) const = 0;
+    virtual double waveSpeed(const Mat<D>& F) const = 0;
+    virtual double maxWaveSpeed(const Mat<D>* F, std::size_t n) const = 0;
+    // Young's modulus (used by hourglass control, spec §12).
+    virtual double youngsModulus() const = 0;
+    // "neoHookean(mu=3.571e+05, kappa=1.67e+06, rho=1000)"
+    virtual std::string summary() const = 0;
+
+    static Schema commonSchema()
+    {
+        return Schema().add(Key::real("rho", "initial density rho0 [kg/m^3] (1D: mass per unit "
+                                             "length [kg/m])")
+                                .positive());
+    }
+
+protected:
+    explicit Material(const Params& params) : rho_(params.real("rho")) {}
+
+private:
+    double rho_;
+};
+
+// Implements the batch and bookkeeping methods of Material<D> for a model that provides the
+// inline, non-virtual  Mat<D> stressOf(F), double energyOf(F), double waveSpeedOf(F).
+template <int D, class Derived>
+class MaterialModel : public Material<D>
+{
+public:
+    using Material<D>::Material;
+
+    double energy(const Mat<D>& F) const final { return self().energyOf(F); }
+    Mat<D> stress(const Mat<D>& F) const final { return self().stressOf(F); }
+    void evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n) const final
+    {
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            P[i] = self().stressOf(F[i]);
+        }
+        if (psi)
+        {
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                psi[i] = self().energyOf(F[i]);
+            }
+        }
+    }
+    double waveSpeed(const Mat<D>& F) const final { return self().waveSpeedOf(F); }
+    double maxWaveSpeed(const Mat<D>* F, std::size_t n) const final
+    {
+        double c = 0.0;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            c = std::max(c, self().waveSpeedOf(F[i]));
+        }
+        return c;
+    }
+
+private:
+    const Derived& self() const { return static_cast<const Derived&>(*this); }
+};
+
+// Smallest and largest eigenvalue of C = F^T F (the squared principal stretches).
+template <int D>
+std::pair<double, double> stretchSquaredRange(const Mat<D>& F)
+{
+    const Mat<D> C = F.transpose() * F;
+    if constexpr (D == 1)
+    {
+        return {C(0, 0), C(0, 0)};
+    }
+    else if constexpr (D == 2)
+    {
+        const double half = 0.5 * (C(0, 0) + C(1, 1));
+        const double det = C(0, 0) * C(1, 1) - C(0, 1) * C(1, 0);
+        const double root = std::sqrt(std::max(0.0, half * half - det));
+        return {half - root, half + root};
+    }
+    else
+    {
+        Eigen::SelfAdjointEigenSolver<Mat<3>> solver;
+        solver.computeDirect(C, Eigen::EigenvaluesOnly);
+        return {solver.eigenvalues()[0], solver.eigenvalues()[2]};
+    }
+}
+
+// Lamé constants from Young's modulus and Poisson's ratio (3D / plane strain).
+inline std::pair<double, double> lameFromYoung(double E, double nu)
+{
+    const double mu = E / (2.0 * (1.0 + nu));
+    const double lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+    return {lambda, mu};
+}
+
+} // namespace sph

@@ -1,0 +1,246 @@
+#include "particles/NeighbourList.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace sph
+{
+
+std::size_t NeighbourList::maxCount() const
+{
+    std::size_t result = 0;
+    for (std::size_t a = 0; a + 1 < offsets.size(); ++a)
+    {
+        result = std::max<std::size_t>(result, offsets[a + 1] - offsets[a]);
+    }
+    return result;
+}
+
+namespace
+{
+
+// A uniform grid of cells over the bounding box of `points`, with the points sorted by cell.
+template <int D>
+class CellGrid
+{
+public:
+    CellGrid(const std::vector<Vec<D>>& points, double cellSize) : cellSize_(cellSize)
+    {
+        if (!(cellSize > 0.0) || !std::isfinite(cellSize))
+        {
+            throw std::invalid_argument("neighbour search radius must be positive and finite");
+        }
+        lower_.setConstant(std::numeric_limits<double>::max());
+        Vec<D> upper = Vec<D>::Constant(std::numeric_limits<double>::lowest());
+        for (const auto& p : points)
+        {
+            lower_ = lower_.cwiseMin(p);
+            upper = upper.cwiseMax(p);
+        }
+        if (points.empty())
+        {
+            lower_.setZero();
+            upper.setZero();
+        }
+        std::size_t cells = 1;
+        for (int d = 0; d < D; ++d)
+        {
+            // Cap the grid size: a sparse far-flung cloud would otherwise allocate huge grids.
+            const double span = (upper[d] - lower_[d]) / cellSize_;
+            dims_[d] = static_cast<long>(std::min(span, 1.0e6)) + 1;
+            cells *= static_cast<std::size_t>(dims_[d]);
+        }
+        if (cells > 64 * points.size() + 1024)
+        {
+            // Too sparse for a dense grid: grow the cells (correct, just less selective).
+            const double factor = std::pow(static_cast<double>(cells) /
+                                               static_cast<double>(64 * points.size() + 1024),
+                                           1.0 / D);
+            cellSize_ *= factor * 1.01;
+            cells = 1;
+            for (int d = 0; d < D; ++d)
+            {
+                dims_[d] = static_cast<long>((upper[d] - lower_[d]) / cellSize_) + 1;
+                cells *= static_cast<std::size_t>(dims_[d]);
+            }
+        }
+        start_.assign(cells + 1, 0);
+        cellOf_.resize(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i)
+        {
+            cellOf_[i] = cellIndex(coordinates(points[i]));
+            ++start_[cellOf_[i] + 1];
+        }
+        for (std::size_t c = 0; c < cells; ++c)
+        {
+            start_[c + 1] += start_[c];
+        }
+        sorted_.resize(points.size());
+        std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+        for (std::size_t i = 0; i < points.size(); ++i)
+        {
+            sorted_[fill[cellOf_[i]]++] = static_cast<std::uint32_t>(i);
+        }
+    }
+
+    std::array<long, D> coordinates(const Vec<D>& p) const
+    {
+        std::array<long, D> c{};
+        for (int d = 0; d < D; ++d)
+        {
+            const long value = static_cast<long>(std::floor((p[d] - lower_[d]) / cellSize_));
+            c[d] = std::clamp(value, -1L, dims_[d]); // points outside fall into a border ring
+        }
+        return c;
+    }
+
+    // Calls visit(j) for every point in the cells around `p` (3^D cells).
+    template <class Visit>
+    void forEachNear(const Vec<D>& p, Visit&& visit) const
+    {
+        const std::array<long, D> centre = coordinates(p);
+        std::array<long, D> offset{};
+        offset.fill(-1);
+        while (true)
+        {
+            bool inside = true;
+            std::array<long, D> c{};
+            for (int d = 0; d < D; ++d)
+            {
+                c[d] = centre[d] + offset[d];
+                inside = inside && c[d] >= 0 && c[d] < dims_[d];
+            }
+            if (inside)
+            {
+                const std::size_t cell = cellIndex(c);
+                for (std::size_t k = start_[cell]; k < start_[cell + 1]; ++k)
+                {
+                    visit(sorted_[k]);
+                }
+            }
+            int d = 0;
+            while (d < D && offset[d] == 1)
+            {
+                offset[d] = -1;
+                ++d;
+            }
+            if (d == D)
+            {
+                break;
+            }
+            ++offset[d];
+        }
+    }
+
+private:
+    std::size_t cellIndex(const std::array<long, D>& c) const
+    {
+        std::size_t index = 0;
+        for (int d = D - 1; d >= 0; --d)
+        {
+            const long clamped = std::clamp(c[d], 0L, dims_[d] - 1);
+            index = index * static_cast<std::size_t>(dims_[d]) + static_cast<std::size_t>(clamped);
+        }
+        return index;
+    }
+
+    double cellSize_;
+    Vec<D> lower_;
+    std::array<long, D> dims_{};
+    std::vector<std::size_t> start_;
+    std::vector<std::size_t> cellOf_;
+    std::vector<std::uint32_t> sorted_;
+};
+
+// Fills the CSR list in one search pass: each thread searches a contiguous block of particles
+// into its own buffer, then the buffers are copied in block order, so the result is the same
+// for any thread count.
+template <int D, class Candidates>
+NeighbourList fillLists(std::size_t n, Candidates&& candidates)
+{
+    NeighbourList list;
+    list.offsets.assign(n + 1, 0);
+    std::vector<std::vector<std::uint32_t>> blocks;
+#pragma omp parallel
+    {
+#pragma omp single
+        blocks.resize(static_cast<std::size_t>(omp_get_num_threads()));
+        const std::size_t threads = blocks.size();
+        const std::size_t thread = static_cast<std::size_t>(omp_get_thread_num());
+        const std::size_t first = n * thread / threads;
+        const std::size_t last = n * (thread + 1) / threads;
+        std::vector<std::uint32_t>& found = blocks[thread];
+        for (std::size_t a = first; a < last; ++a)
+        {
+            const std::size_t before = found.size();
+            candidates(a, found);
+            list.offsets[a + 1] = static_cast<std::uint32_t>(found.size() - before);
+        }
+    }
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        list.offsets[a + 1] += list.offsets[a];
+    }
+    list.indices.resize(list.offsets[n]);
+    const std::size_t threads = blocks.size();
+#pragma omp parallel for schedule(static, 1)
+    for (std::size_t thread = 0; thread < threads; ++thread)
+    {
+        const std::size_t first = n * thread / threads;
+        std::copy(blocks[thread].begin(), blocks[thread].end(),
+                  list.indices.begin() + list.offsets[first]);
+    }
+    return list;
+}
+
+} // namespace
+
+template <int D>
+NeighbourList buildNeighbourList(const std::vector<Vec<D>>& x, const std::vector<int>& body,
+                                 double radius)
+{
+    const CellGrid<D> grid(x, radius);
+    const double radius2 = radius * radius;
+    return fillLists<D>(x.size(), [&](std::size_t a, std::vector<std::uint32_t>& found) {
+        const std::size_t first = found.size() + 1;
+        found.push_back(static_cast<std::uint32_t>(a));
+        grid.forEachNear(x[a], [&](std::uint32_t b) {
+            if (b != a && body[b] == body[a] && (x[b] - x[a]).squaredNorm() < radius2)
+            {
+                found.push_back(b);
+            }
+        });
+        std::sort(found.begin() + static_cast<long>(first), found.end());
+    });
+}
+
+template <int D>
+NeighbourList buildCrossNeighbourList(const std::vector<Vec<D>>& query,
+                                      const std::vector<Vec<D>>& source, double radius)
+{
+    const CellGrid<D> grid(source, radius);
+    const double radius2 = radius * radius;
+    return fillLists<D>(query.size(), [&](std::size_t a, std::vector<std::uint32_t>& found) {
+        const std::size_t first = found.size();
+        grid.forEachNear(query[a], [&](std::uint32_t b) {
+            if ((source[b] - query[a]).squaredNorm() < radius2)
+            {
+                found.push_back(b);
+            }
+        });
+        std::sort(found.begin() + static_cast<long>(first), found.end());
+    });
+}
+
+template NeighbourList buildNeighbourList<1>(const std::vector<Vec<1>>&, const std::vector<int>&, double);
+template NeighbourList buildNeighbourList<2>(const std::vector<Vec<2>>&, const std::vector<int>&, double);
+template NeighbourList buildNeighbourList<3>(const std::vector<Vec<3>>&, const std::vector<int>&, double);
+template NeighbourList buildCrossNeighbourList<1>(const std::vector<Vec<1>>&, const std::vector<Vec<1>>&, double);
+template NeighbourList buildCrossNeighbourList<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&, double);
+template NeighbourList buildCrossNeighbourList<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&, double);
+
+} // namespace sph

@@ -1,0 +1,53 @@
+#pragma once
+// The reference configuration of CSPH (spec §3, §4): positions x^r, volumes V^r, the
+// deformation gradient F^r from the initial configuration, and — for the gradient-of-F
+// scheme — K = ∂F^r/∂x^r (spec §6.5); plus everything that depends only on them: neighbour
+// lists, kernel values and gradients per pair, and the corrected gradient.
+//
+// Total-Lagrangian: x^r = X, V^r = V0, F^r = I, K = 0, built once.
+// Updated-Lagrangian: x^r ← x, F^r ← F, V^r ← J V0 at each update, then rebuilt.
+
+#include "kernels/Kernel.hpp"
+#include "particles/CorrectedGradient.hpp"
+#include "particles/NeighbourList.hpp"
+#include "particles/ParticleSet.hpp"
+
+#include <vector>
+
+namespace sph
+{
+
+template <int D>
+struct ReferenceConfiguration
+{
+    std::vector<Vec<D>> x;     // x^r
+    std::vector<double> V;     // V^r
+    std::vector<Mat<D>> F;     // F^r
+    std::vector<Tensor3<D>> K; // ∂F^r/∂x^r, only when the scheme carries it (else empty)
+
+    NeighbourList neighbours;      // in x^r, same body, self first
+    std::vector<double> W;         // per pair: W(|x^r_ab|)
+    std::vector<Vec<D>> gradW;     // per pair: ∇W_ab = W'(r)(x^r_a - x^r_b)/r
+    CorrectedGradient<D> gradient; // L_a, e_a from gradW
+    double searchRadius = 0.0;
+    long updateStep = 0; // time step at which x^r was last set
+
+    std::size_t size() const { return x.size(); }
+
+    // x^r = X, V^r = V0, F^r = I (and K = 0 when withGradient).
+    void setInitial(const ParticleSet<D>& particles, bool withGradient);
+
+    // Recomputes neighbour lists, kernel values and corrected gradients from x^r and V^r.
+    // Returns the first particle whose corrected gradient is singular, or -1.
+    long rebuild(const Kernel& kernel, const std::vector<int>& body, double radius);
+
+    // g_a(b) for slot k of a's list (k > begin(a)): V_b L_a ∇W_ab.
+    Vec<D> g(std::size_t a, std::size_t k) const
+    {
+        return V[neighbours.indices[k]] * (gradient.L[a] * gradW[k]);
+    }
+    // g_a(a) = L_a e_a
+    Vec<D> gSelf(std::size_t a) const { return gradient.L[a] * gradient.e[a]; }
+};
+
+} // namespace sph

@@ -1,0 +1,345 @@
+#include "stabilisation/gradF/GradF.hpp"
+
+#include <cmath>
+
+namespace sph
+{
+
+template <int D>
+std::string GradF<D>::description()
+{
+    return "The seed paper's gradient-of-F stabilisation (Saito & Kusachi 2017): energy "
+           "sum_a V0_a sum_b W^_ab Psi(F_a + G_a x_ba), exact force of spec §6.4. No tuning "
+           "parameter.";
+}
+
+namespace
+{
+
+// H from the least-squares coefficients c (½ H[v,v] = Σ_p c_p z_p(v)):
+// H_ijj = 2 c_i(jj), H_ijk = H_ikj = c_i(jk) for j < k (spec §6.2).
+template <int D, class MatDM>
+Tensor3<D> hessianFromCoefficients(const MatDM& c)
+{
+    Tensor3<D> H = Tensor3<D>::zero();
+    int p = 0;
+    for (int j = 0; j < D; ++j)
+    {
+        for (int k = j; k < D; ++k, ++p)
+        {
+            if (j == k)
+            {
+                for (int i = 0; i < D; ++i)
+                {
+                    H(i, j, j) = 2.0 * c(i, p);
+                }
+            }
+            else
+            {
+                for (int i = 0; i < D; ++i)
+                {
+                    H(i, j, k) = c(i, p);
+                    H(i, k, j) = c(i, p);
+                }
+            }
+        }
+    }
+    return H;
+}
+
+// B~_ip: 2 B_imm for p = (m, m); B_imk + B_ikm for p = (m, k), m < k, with B_imk = B[k](i, m).
+template <int D, class MatDM>
+MatDM contractMonomials(const Tensor3<D>& B)
+{
+    MatDM Bt;
+    int p = 0;
+    for (int m = 0; m < D; ++m)
+    {
+        for (int k = m; k < D; ++k, ++p)
+        {
+            if (m == k)
+            {
+                Bt.col(p) = 2.0 * B.slice[static_cast<std::size_t>(m)].col(m);
+            }
+            else
+            {
+                Bt.col(p) = B.slice[static_cast<std::size_t>(k)].col(m) +
+                            B.slice[static_cast<std::size_t>(m)].col(k);
+            }
+        }
+    }
+    return Bt;
+}
+
+} // namespace
+
+template <int D>
+long GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
+{
+    const NeighbourList& list = ref.neighbours;
+    const std::size_t n = ref.size();
+    invDenominator_.resize(n);
+    Zinv_.resize(n);
+    s_.resize(n);
+    Y_.resize(n);
+    maxNeighbours_ = list.maxCount();
+    long singular = -1;
+#pragma omp parallel for schedule(static) reduction(max : singular)
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        double denominator = 0.0;
+        for (std::size_t k = list.begin(a); k < list.end(a); ++k)
+        {
+            denominator += ref.W[k] * ref.V[list.indices[k]];
+        }
+        invDenominator_[a] = 1.0 / denominator;
+        MatM Z = MatM::Zero();
+        MonomialVec<D> s = MonomialVec<D>::Zero();
+        MatMD Y = MatMD::Zero();
+        for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
+        {
+            const Vec<D> xr = ref.x[list.indices[k]] - ref.x[a];
+            const MonomialVec<D> z = monomials<D>(xr);
+            const double w = weight(ref, a, k);
+            Z.noalias() += w * z * z.transpose();
+            s += w * z;
+            Y.noalias() += w * z * xr.transpose();
+        }
+        // Z is SPD with at least M non-degenerate neighbours; judge it scale-free.
+        const double scale = Z.trace() / M;
+        const double det = (Z / scale).determinant();
+        if (!(scale > 0.0) || !(det > 1.0e-12) || !std::isfinite(det))
+        {
+            singular = std::max<long>(singular, static_cast<long>(n - a));
+            Zinv_[a].setZero();
+        }
+        else
+        {
+            Zinv_[a] = Z.inverse();
+        }
+        s_[a] = s;
+        Y_[a] = Y;
+    }
+    return singular < 0 ? -1 : static_cast<long>(n) - singular;
+}
+
+template <int D>
+typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vector<Vec<D>>& x,
+                                                   const ReferenceConfiguration<D>& ref) const
+{
+    const NeighbourList& list = ref.neighbours;
+    Kinematics kin;
+    kin.f = incrementalGradient<D>(a, x, ref, StandardGradients<D>{ref});
+    kin.F = kin.f * ref.F[a];
+    // Least squares for ½H: c_a = [Σ_b Ŵ_ab y_ab z_ab^T] Z_a^{-1}, y_ab = x_ba - f_a x^r_ba.
+    MatDM R = MatDM::Zero();
+    for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
+    {
+        const std::size_t b = list.indices[k];
+        const Vec<D> xr = ref.x[b] - ref.x[a];
+        const Vec<D> y = (x[b] - x[a]) - kin.f * xr;
+        R.noalias() += (weight(ref, a, k) * y) * monomials<D>(xr).transpose();
+    }
+    const MatDM c = R * Zinv_[a];
+    kin.H = hessianFromCoefficients<D>(c);
+    // G[k] = H[k] F^r + f K[k]  (G_ijk = H_imk F^r_mj + f_im K_mjk)
+    for (int k = 0; k < D; ++k)
+    {
+        const auto kk = static_cast<std::size_t>(k);
+        kin.G.slice[kk] = kin.H.slice[kk] * ref.F[a];
+        if (!ref.K.empty())
+        {
+            kin.G.slice[kk] += kin.f * ref.K[a].slice[kk];
+        }
+    }
+    return kin;
+}
+
+template <int D>
+ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
+                                      const ReferenceConfiguration<D>& ref, std::vector<Mat<D>>& F,
+                                      std::vector<Tensor3<D>>* newK) const
+{
+    const std::size_t n = ref.size();
+    F.resize(n);
+    if (newK)
+    {
+        newK->resize(n);
+    }
+#pragma omp parallel for schedule(static)
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        const Kinematics kin = kinematics(a, x, ref);
+        F[a] = kin.F;
+        if (newK)
+        {
+            // K' = G f^{-1} on the derivative index: K'_ijk = G_ijl (f^{-1})_lk (spec §6.5).
+            const Mat<D> finv = kin.f.inverse();
+            for (int k = 0; k < D; ++k)
+            {
+                Mat<D> slice = Mat<D>::Zero();
+                for (int l = 0; l < D; ++l)
+                {
+                    slice += kin.G.slice[static_cast<std::size_t>(l)] * finv(l, k);
+                }
+                (*newK)[a].slice[static_cast<std::size_t>(k)] = slice;
+            }
+        }
+    }
+    ForceStatus status;
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        double J;
+        if (!admissible<D>(F[a], J))
+        {
+            status.badParticle = static_cast<long>(a);
+            status.badValue = J;
+            status.badQuantity = "det F";
+            break;
+        }
+    }
+    return status;
+}
+
+template <int D>
+ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out, bool wantEnergy)
+{
+    const ReferenceConfiguration<D>& ref = in.ref;
+    const NeighbourList& list = ref.neighbours;
+    const std::size_t n = ref.size();
+    out.T.resize(n);
+    out.F.resize(n);
+    out.P.resize(n);
+    UL_.resize(n);
+    Cw_.resize(n);
+    selfTerm_.resize(n);
+    if (chunks_.empty() || chunks_.back().end != n)
+    {
+        chunks_ = makeChunks(in.bodies);
+    }
+    const bool carriesK = !ref.K.empty();
+    std::vector<ChunkTally> tallies(chunks_.size());
+#pragma omp parallel
+    {
+        std::vector<Mat<D>> Fb(maxNeighbours_);
+        std::vector<Mat<D>> Pb(maxNeighbours_);
+        std::vector<double> psi(maxNeighbours_);
+#pragma omp for schedule(static)
+        for (std::size_t i = 0; i < chunks_.size(); ++i)
+        {
+            const ParticleChunk& chunk = chunks_[i];
+            const Material<D>& material = *in.materials[chunk.body];
+            ChunkTally& tally = tallies[i];
+            for (std::size_t a = chunk.begin; a < chunk.end; ++a)
+            {
+                Kinematics kin = kinematics(a, in.x, ref);
+                double J;
+                if (!admissible<D>(kin.F, J))
+                {
+                    tally.flag(a, J, "det F");
+                    kin.F.setIdentity(); // keep the arithmetic finite; the run stops
+                    kin.G = Tensor3<D>::zero();
+                }
+                out.F[a] = kin.F;
+                // Stresses at F_b(a) = F_a + G_a x^r_ba for every neighbour b (incl. a).
+                const std::size_t first = list.begin(a);
+                const std::size_t count = list.count(a);
+                for (std::size_t j = 0; j < count; ++j)
+                {
+                    const Vec<D> xr = ref.x[list.indices[first + j]] - ref.x[a];
+                    Fb[j] = kin.F + kin.G.contract(xr);
+                }
+                material.evaluate(Fb.data(), Pb.data(), wantEnergy ? psi.data() : nullptr,
+                                  count);
+                out.P[a] = Pb[0]; // b = a: F_a(a) = F_a
+                // S_a = Σ Ŵ P_b,  Q_a[k] = Σ Ŵ x^r_ba,k P_b
+                Mat<D> S = Mat<D>::Zero();
+                Tensor3<D> Q = Tensor3<D>::zero();
+                double energy = 0.0;
+                for (std::size_t j = 0; j < count; ++j)
+                {
+                    const std::size_t k = first + j;
+                    const double w = weight(ref, a, k);
+                    const Vec<D> xr = ref.x[list.indices[k]] - ref.x[a];
+                    S.noalias() += w * Pb[j];
+                    for (int d = 0; d < D; ++d)
+                    {
+                        Q.slice[static_cast<std::size_t>(d)].noalias() += (w * xr[d]) * Pb[j];
+                    }
+                    if (wantEnergy)
+                    {
+                        energy += w * psi[j];
+                    }
+                }
+                tally.energy += in.V0[a] * energy;
+                // A = S F^r^T + Q:K,  B[k] = Q[k] F^r^T,  C = B~ Z^{-1},  Ã = A - C Y
+                const Mat<D> FrT = ref.F[a].transpose();
+                Mat<D> A = S * FrT;
+                Tensor3<D> B;
+                for (int d = 0; d < D; ++d)
+                {
+                    const auto dd = static_cast<std::size_t>(d);
+                    B.slice[dd] = Q.slice[dd] * FrT;
+                    if (carriesK)
+                    {
+                        A.noalias() += Q.slice[dd] * ref.K[a].slice[dd].transpose();
+                    }
+                }
+                const MatDM C = contractMonomials<D, MatDM>(B) * Zinv_[a];
+                const Mat<D> Atilde = A - C * Y_[a];
+                UL_[a] = in.V0[a] * Atilde * ref.gradient.L[a];
+                Cw_[a] = (in.V0[a] * invDenominator_[a]) * C;
+                selfTerm_[a] = in.V0[a] * (C * s_[a]);
+            }
+        }
+        // T_c = -V^r_c Σ_{a≠c} [UL_a d_ac + W_ca Cw_a z_ac] - UL_c e_c + V0_c C_c s_c
+#pragma omp for schedule(static)
+        for (std::size_t c = 0; c < n; ++c)
+        {
+            Vec<D> sum = Vec<D>::Zero();
+            for (std::size_t k = list.begin(c) + 1; k < list.end(c); ++k)
+            {
+                const std::size_t a = list.indices[k];
+                const Vec<D> xr = ref.x[a] - ref.x[c];
+                sum.noalias() -= UL_[a] * ref.gradW[k]; // d_ac = ∇W_ac = -∇W_ca
+                sum.noalias() += ref.W[k] * (Cw_[a] * monomials<D>(xr));
+            }
+            out.T[c] = -ref.V[c] * sum - UL_[c] * ref.gradient.e[c] + selfTerm_[c];
+        }
+    }
+    ForceStatus status = combine(tallies);
+    checkForces<D>(out.T, status);
+    return status;
+}
+
+template <int D>
+double GradF<D>::energy(const ForceInput<D>& in)
+{
+    const ReferenceConfiguration<D>& ref = in.ref;
+    const NeighbourList& list = ref.neighbours;
+    double total = 0.0;
+    for (std::size_t b = 0; b < in.bodies.size(); ++b)
+    {
+        const Material<D>& material = *in.materials[b];
+        for (std::size_t a = in.bodies[b].begin; a < in.bodies[b].end; ++a)
+        {
+            const Kinematics kin = kinematics(a, in.x, ref);
+            double sum = 0.0;
+            for (std::size_t k = list.begin(a); k < list.end(a); ++k)
+            {
+                const Vec<D> xr = ref.x[list.indices[k]] - ref.x[a];
+                sum += weight(ref, a, k) * material.energy(kin.F + kin.G.contract(xr));
+            }
+            total += in.V0[a] * sum;
+        }
+    }
+    return total;
+}
+
+template class GradF<1>;
+template class GradF<2>;
+template class GradF<3>;
+
+SPH_REGISTER_DIM_MODEL(Stabilisation, GradF, "gradF");
+
+} // namespace sph

@@ -1,0 +1,75 @@
+#pragma once
+// `gradF`: the seed paper's method (Saito & Kusachi 2017, §2.6), normative form spec §6.
+// No tuning parameter.
+//
+// Kinematics: F_b(a) = F_a + G_a x^r_ba ("F at b seen from a", eq. 21), G_a = ∇_{x^r} F_a =
+//   H_a F^r_a + f_a K_a, H_a = ∇_{x^r} f_a from a weighted least-squares fit of the second-
+//   order Taylor term with f_a fixed (monomials v_j v_k, j <= k: 1, 3, 6 unknowns in 1D/2D/3D),
+//   weights Ŵ_ab = W_ab V^r_b / Σ_e W_ae V^r_e (spec §6.2), and K = ∂F^r/∂x^r carried across
+//   reference updates (K ← G f^{-1}, spec §6.5).
+// Energy: Π = Σ_a V0_a Σ_{b∈N(a)} Ŵ_ab Ψ(F_b(a)) (spec §6.3).
+// Force: the exact -∂Π/∂x of spec §6.4 (which replaces the paper's garbled eq. 33):
+//   T_c = -Σ_a V0_a { (A_a - C_a Y_a) g_a(c) + C_a (Ŵ_ac z_ac - δ_ac s_a) }.
+// Without the gradient term (G = 0) this is exactly `none`.
+// Keys: none.
+
+#include "stabilisation/CsphOperators.hpp"
+
+namespace sph
+{
+
+template <int D>
+class GradF : public Stabilisation<D>
+{
+public:
+    static constexpr int M = monomialCount<D>;
+    using MatM = Eigen::Matrix<double, M, M>;
+    using MatDM = Eigen::Matrix<double, D, M>;
+    using MatMD = Eigen::Matrix<double, M, D>;
+
+    static std::string description();
+    static Schema schema() { return Schema(); }
+    GradF(const Params&, const typename Stabilisation<D>::Args&) {}
+
+    bool carriesReferenceGradient() const override { return true; }
+    long prepare(const ReferenceConfiguration<D>& ref) override;
+    ForceStatus referenceUpdate(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
+                                std::vector<Mat<D>>& F,
+                                std::vector<Tensor3<D>>* newK) const override;
+    ForceStatus computeForces(const ForceInput<D>& in, ForceOutput<D>& out,
+                              bool wantEnergy) override;
+    double energy(const ForceInput<D>& in) override;
+    std::string summary() const override { return "gradF"; }
+
+    // Kinematics of particle a at positions x: f_a, F_a = f_a F^r_a and G_a (public for tests).
+    struct Kinematics
+    {
+        Mat<D> f;
+        Mat<D> F;
+        Tensor3<D> G;
+        Tensor3<D> H; // ∇_{x^r} f
+    };
+    Kinematics kinematics(std::size_t a, const std::vector<Vec<D>>& x,
+                          const ReferenceConfiguration<D>& ref) const;
+
+private:
+    // Per-reference data of particle a (spec §6.2, §6.3).
+    double weight(const ReferenceConfiguration<D>& ref, std::size_t a, std::size_t k) const
+    {
+        return ref.W[k] * ref.V[ref.neighbours.indices[k]] * invDenominator_[a];
+    }
+
+    std::vector<double> invDenominator_; // 1 / Σ_e W_ae V^r_e
+    std::vector<MatM> Zinv_;             // Z_a^{-1}
+    std::vector<MonomialVec<D>> s_;      // s_a = Σ_e Ŵ_ae z_ae
+    std::vector<MatMD> Y_;               // Y_a = Σ_e Ŵ_ae z_ae ⊗ x^r_ea
+    std::size_t maxNeighbours_ = 0;
+
+    // Per-particle results of the first pass, gathered by the second.
+    std::vector<Mat<D>> UL_;          // V0_a (A_a - C_a Y_a) L_a
+    std::vector<MatDM> Cw_;           // V0_a C_a / Σ_e W_ae V^r_e
+    std::vector<Vec<D>> selfTerm_;    // V0_a C_a s_a
+    std::vector<ParticleChunk> chunks_;
+};
+
+} // namespace sph

@@ -1,0 +1,89 @@
+#include "stabilisation/hourglass/Hourglass.hpp"
+
+#include <sstream>
+
+namespace sph
+{
+
+template <int D>
+std::string Hourglass<D>::description()
+{
+    return "Ganzenmueller (2015) hourglass control: pairwise penalty on the error of the "
+           "F-predicted bond, parameter alpha (spec §5.2). Not derived from an energy.";
+}
+
+template <int D>
+Schema Hourglass<D>::schema()
+{
+    return Schema().add(Key::real("alpha", "hourglass stiffness alpha_HG (dimensionless; 10-50 "
+                                           "usual, problem dependent)")
+                            .nonNegative()
+                            .defaultValue("10"));
+}
+
+template <int D>
+Hourglass<D>::Hourglass(const Params& params, const typename Stabilisation<D>::Args&)
+    : alpha_(params.real("alpha"))
+{
+}
+
+template <int D>
+Vec<D> Hourglass<D>::hourglassForce(std::size_t a, const ForceInput<D>& in,
+                                    const std::vector<Mat<D>>& f) const
+{
+    const NeighbourList& list = in.ref.neighbours;
+    const double E = in.materials[static_cast<std::size_t>(in.body[a])]->youngsModulus();
+    Vec<D> force = Vec<D>::Zero();
+    for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
+    {
+        const std::size_t b = list.indices[k];
+        const Vec<D> xr = in.ref.x[b] - in.ref.x[a];
+        const Vec<D> xc = in.x[b] - in.x[a];
+        const double length = xc.norm();
+        const double referenceLength2 = xr.squaredNorm();
+        if (length <= 0.0 || referenceLength2 <= 0.0 || in.ref.W[k] == 0.0)
+        {
+            continue;
+        }
+        const Vec<D> unit = xc / length;
+        const Vec<D> gamma = 0.5 * (f[a] + f[b]) * xr - xc;
+        const double delta = 0.5 * gamma.dot(unit);
+        force -= (alpha_ * E * in.V0[a] * in.V0[b] * in.ref.W[k] * delta / referenceLength2) * unit;
+    }
+    return force;
+}
+
+template <int D>
+ForceStatus Hourglass<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out,
+                                        bool wantEnergy)
+{
+    ForceStatus status = core_.compute(in, out, wantEnergy, StandardGradients<D>{in.ref}, &f_);
+    if (!status.ok() || alpha_ == 0.0)
+    {
+        return status;
+    }
+    const std::size_t n = in.ref.size();
+#pragma omp parallel for schedule(static)
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        out.T[a] += hourglassForce(a, in, f_);
+    }
+    checkForces<D>(out.T, status);
+    return status;
+}
+
+template <int D>
+std::string Hourglass<D>::summary() const
+{
+    std::ostringstream out;
+    out << "hourglass(alpha=" << alpha_ << ")";
+    return out.str();
+}
+
+template class Hourglass<1>;
+template class Hourglass<2>;
+template class Hourglass<3>;
+
+SPH_REGISTER_DIM_MODEL(Stabilisation, Hourglass, "hourglass");
+
+} // namespace sph

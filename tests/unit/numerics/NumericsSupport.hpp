@@ -1,0 +1,239 @@
+#pragma once
+// Fixtures for the numerical tests: models built by name through the registry (the way the
+// solver builds them), point clouds, and the deformed reference configuration of spec §7
+// (non-trivial F^r and K = ∂F^r/∂x^r) for updated-Lagrangian checks.
+
+#include "core/DictionaryParser.hpp"
+#include "formulations/Formulation.hpp"
+#include "kernels/Kernel.hpp"
+#include "materials/Material.hpp"
+#include "particles/ReferenceConfiguration.hpp"
+#include "stabilisation/Stabilisation.hpp"
+#include "support/TestSupport.hpp"
+
+#include <Eigen/Dense>
+
+#include <random>
+
+namespace sph::test
+{
+
+// Builds model `Base` from dictionary text such as "type neoHookean; mu 1; kappa 5; rho 1;".
+template <class Base>
+std::unique_ptr<Base> build(const std::string& text, const typename Base::Args& args, int dim)
+{
+    loadModelLibraries();
+    const auto dict = DictionaryParser::parseString("model { " + text + " }\n", "test");
+    return selectModel<Base>(dict->find("model")->dict(), args, dim);
+}
+
+inline std::unique_ptr<Kernel> makeKernel(const std::string& name, int dim, double spacing,
+                                          double hOverDx)
+{
+    return build<Kernel>("type " + name + "; hOverDx " + std::to_string(hOverDx) + ";",
+                         Kernel::Args{dim, spacing}, dim);
+}
+
+// A lattice of n^D points with spacing 1, each moved by up to ±perturbation.
+template <int D>
+std::vector<Vec<D>> lattice(int n, double perturbation, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    std::vector<Vec<D>> points;
+    std::array<int, D> index{};
+    while (true)
+    {
+        Vec<D> p;
+        for (int d = 0; d < D; ++d)
+        {
+            p[d] = index[static_cast<std::size_t>(d)] + perturbation * uniform(random);
+        }
+        points.push_back(p);
+        int d = 0;
+        while (d < D && index[static_cast<std::size_t>(d)] == n - 1)
+        {
+            index[static_cast<std::size_t>(d)] = 0;
+            ++d;
+        }
+        if (d == D)
+        {
+            break;
+        }
+        ++index[static_cast<std::size_t>(d)];
+    }
+    return points;
+}
+
+// The reference map of spec §7: x^r = B X + 0.3 (sin(k1·X) e1 + cos(k2·X) e2), with its
+// analytic F^r and K = ∇_X F^r (F^r)^{-1}.
+template <int D>
+struct DeformedReference
+{
+    Mat<D> B;
+    Vec<D> k1;
+    Vec<D> k2;
+    Vec<D> e1;
+    Vec<D> e2;
+    double amplitude = 0.3;
+
+    explicit DeformedReference(unsigned seed)
+    {
+        std::mt19937 random(seed);
+        std::normal_distribution<double> normal;
+        const double k1v[3] = {0.5, 0.3, 0.2};
+        const double k2v[3] = {0.4, -0.6, 0.25};
+        for (int d = 0; d < D; ++d)
+        {
+            k1[d] = k1v[d];
+            k2[d] = k2v[d];
+        }
+        e1 = Vec<D>::Unit(0);
+        e2 = Vec<D>::Unit(std::min(1, D - 1));
+        B = Mat<D>::Identity();
+        for (int i = 0; i < D; ++i)
+        {
+            for (int j = 0; j < D; ++j)
+            {
+                B(i, j) += 0.1 * normal(random);
+            }
+        }
+    }
+    Vec<D> map(const Vec<D>& X) const
+    {
+        return B * X + amplitude * (std::sin(k1.dot(X)) * e1 + std::cos(k2.dot(X)) * e2);
+    }
+    Mat<D> gradient(const Vec<D>& X) const
+    {
+        return B + amplitude * (std::cos(k1.dot(X)) * e1 * k1.transpose() -
+                                std::sin(k2.dot(X)) * e2 * k2.transpose());
+    }
+    // K_mjk = (∇_X F^r)_mjs (F^r)^{-1}_sk
+    Tensor3<D> K(const Vec<D>& X) const
+    {
+        Tensor3<D> gradXF = Tensor3<D>::zero();
+        for (int s = 0; s < D; ++s)
+        {
+            gradXF.slice[static_cast<std::size_t>(s)] =
+                amplitude * (-std::sin(k1.dot(X)) * k1[s] * e1 * k1.transpose() -
+                             std::cos(k2.dot(X)) * k2[s] * e2 * k2.transpose());
+        }
+        const Mat<D> inverse = gradient(X).inverse();
+        Tensor3<D> result = Tensor3<D>::zero();
+        for (int k = 0; k < D; ++k)
+        {
+            for (int s = 0; s < D; ++s)
+            {
+                result.slice[static_cast<std::size_t>(k)] +=
+                    gradXF.slice[static_cast<std::size_t>(s)] * inverse(s, k);
+            }
+        }
+        return result;
+    }
+};
+
+// One body of particles with a scheme, a material and a reference configuration.
+template <int D>
+struct SchemeFixture
+{
+    std::unique_ptr<Kernel> kernel;
+    std::unique_ptr<Material<D>> material;
+    std::unique_ptr<Stabilisation<D>> scheme;
+    std::vector<const Material<D>*> materials;
+    std::vector<BodyRange> bodies;
+    std::vector<int> body;
+    std::vector<double> V0;
+    std::vector<Vec<D>> X;
+    ReferenceConfiguration<D> ref;
+
+    // updated: use the deformed reference configuration of spec §7 (else x^r = X).
+    SchemeFixture(const std::vector<Vec<D>>& points, const std::string& schemeText,
+                  const std::string& materialText, bool updated, double hOverDx = 1.4,
+                  const std::string& kernelName = "cubicSpline", unsigned seed = 1)
+        : X(points)
+    {
+        const std::size_t n = points.size();
+        V0.assign(n, 1.0);
+        body.assign(n, 0);
+        bodies = {BodyRange{"body", 0, n}};
+        material = build<Material<D>>(materialText, {}, D);
+        materials = {material.get()};
+        double spacing = 1.0;
+        ref.x = points;
+        ref.V = V0;
+        ref.F.assign(n, Mat<D>::Identity());
+        if (updated)
+        {
+            const DeformedReference<D> map(seed);
+            spacing = std::pow(std::abs(map.B.determinant()), 1.0 / D);
+            ref.K.resize(n);
+            for (std::size_t a = 0; a < n; ++a)
+            {
+                ref.x[a] = map.map(points[a]);
+                ref.F[a] = map.gradient(points[a]);
+                ref.V[a] = V0[a] * ref.F[a].determinant();
+                ref.K[a] = map.K(points[a]);
+            }
+        }
+        kernel = makeKernel(kernelName, D, spacing, hOverDx);
+        scheme = build<Stabilisation<D>>(schemeText, {kernel.get()}, D);
+        if (!scheme->carriesReferenceGradient())
+        {
+            ref.K.clear();
+        }
+        REQUIRE(ref.rebuild(*kernel, body, scheme->searchRadius(*kernel)) < 0);
+        REQUIRE(scheme->prepare(ref) < 0);
+    }
+
+    ForceInput<D> input(const std::vector<Vec<D>>& x) const
+    {
+        return ForceInput<D>{x, V0, body, bodies, materials, ref};
+    }
+    std::vector<Vec<D>> forces(const std::vector<Vec<D>>& x, ForceStatus* status = nullptr)
+    {
+        std::vector<Vec<D>> T;
+        std::vector<Mat<D>> F;
+        std::vector<Mat<D>> P;
+        ForceOutput<D> out{T, F, P};
+        const ForceStatus result = scheme->computeForces(input(x), out, false);
+        if (status)
+        {
+            *status = result;
+        }
+        return T;
+    }
+    double energy(const std::vector<Vec<D>>& x) { return scheme->energy(input(x)); }
+};
+
+// A non-affine current configuration: x = (I + 0.15 R) x^r + 0.05 sin(x^r·w) + 0.03 noise.
+template <int D>
+std::vector<Vec<D>> deformCurrent(const std::vector<Vec<D>>& xr, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::normal_distribution<double> normal;
+    Mat<D> A = Mat<D>::Identity();
+    for (int i = 0; i < D; ++i)
+    {
+        for (int j = 0; j < D; ++j)
+        {
+            A(i, j) += 0.15 * normal(random);
+        }
+    }
+    Vec<D> w;
+    for (int d = 0; d < D; ++d)
+    {
+        w[d] = 0.3 + 0.4 * d / std::max(1, D - 1);
+    }
+    std::vector<Vec<D>> x(xr.size());
+    for (std::size_t a = 0; a < xr.size(); ++a)
+    {
+        x[a] = A * xr[a] + Vec<D>::Constant(0.05 * std::sin(xr[a].dot(w)));
+        for (int d = 0; d < D; ++d)
+        {
+            x[a][d] += 0.03 * normal(random);
+        }
+    }
+    return x;
+}
+
+} // namespace sph::test

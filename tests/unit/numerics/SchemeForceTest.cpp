@@ -1,0 +1,315 @@
+// Every registered scheme, in total- and updated-Lagrangian form (the latter with a deformed
+// reference configuration and non-zero K), in 1D/2D/3D (design §6, issue 4):
+//   - internal force = -∂Π/∂x by central differences on a random non-trivial state;
+//     hourglass control (not an energy gradient) against a direct pairwise loop instead;
+//   - linear and angular momentum of the internal forces zero to round-off;
+//   - zero force under rigid translation and rotation of a stress-free body.
+#include "numerics/NumericsSupport.hpp"
+#include "stabilisation/hourglass/Hourglass.hpp"
+
+using namespace sph;
+
+namespace
+{
+
+const char* kMaterial = "type neoHookean; mu 1; kappa 5; rho 1;";
+
+template <int D>
+std::string schemeText(const std::string& name)
+{
+    if (name == "vidal")
+    {
+        return D == 1 ? "type vidal; beta (0.2);"
+                      : (D == 2 ? "type vidal; beta (0.2 -0.1);" : "type vidal; beta (0.2 -0.1 0.15);");
+    }
+    if (name == "hourglass")
+    {
+        return "type hourglass; alpha 20;";
+    }
+    return "type " + name + ";";
+}
+
+template <int D>
+std::vector<Vec<D>> cloud()
+{
+    if constexpr (D == 1)
+    {
+        return test::lattice<1>(12, 0.2, 5);
+    }
+    else if constexpr (D == 2)
+    {
+        return test::lattice<2>(8, 0.2, 5);
+    }
+    else
+    {
+        return test::lattice<3>(4, 0.15, 5);
+    }
+}
+
+template <int D>
+double hOverDx()
+{
+    return D == 3 ? 1.6 : 1.4;
+}
+
+// Σ x × T as a vector of the rotations of the plane(s).
+template <int D>
+double angularMomentum(const std::vector<Vec<D>>& x, const std::vector<Vec<D>>& T)
+{
+    if constexpr (D == 1)
+    {
+        return 0.0;
+    }
+    else if constexpr (D == 2)
+    {
+        double L = 0.0;
+        for (std::size_t a = 0; a < x.size(); ++a)
+        {
+            L += x[a][0] * T[a][1] - x[a][1] * T[a][0];
+        }
+        return std::abs(L);
+    }
+    else
+    {
+        Eigen::Vector3d L = Eigen::Vector3d::Zero();
+        for (std::size_t a = 0; a < x.size(); ++a)
+        {
+            L += Eigen::Vector3d(x[a]).cross(Eigen::Vector3d(T[a]));
+        }
+        return L.cwiseAbs().maxCoeff();
+    }
+}
+
+template <int D>
+void checkForces(const std::string& name, bool updated)
+{
+    INFO(name << (updated ? " UL" : " TL") << " " << D << "D");
+    test::SchemeFixture<D> fixture(cloud<D>(), schemeText<D>(name), kMaterial, updated,
+                                   hOverDx<D>());
+    const auto x = test::deformCurrent<D>(fixture.ref.x, 17);
+    ForceStatus status;
+    const auto T = fixture.forces(x, &status);
+    REQUIRE(status.ok());
+    double maxForce = 0.0;
+    double sumForce = 0.0;
+    double sumMoment = 0.0;
+    for (std::size_t a = 0; a < x.size(); ++a)
+    {
+        maxForce = std::max(maxForce, T[a].cwiseAbs().maxCoeff());
+        sumForce += T[a].norm();
+        sumMoment += x[a].norm() * T[a].norm();
+    }
+    REQUIRE(maxForce > 1e-3); // a non-trivial state
+
+    if (name == "hourglass")
+    {
+        // Against a direct loop over unordered pairs, each pair once, f_b = -f_a (spec §12).
+        test::SchemeFixture<D> plain(cloud<D>(), "type none;", kMaterial, updated, hOverDx<D>());
+        const auto T0 = plain.forces(x);
+        std::vector<Mat<D>> f(x.size());
+        for (std::size_t a = 0; a < x.size(); ++a)
+        {
+            Mat<D> sum = Mat<D>::Zero();
+            for (std::size_t k = fixture.ref.neighbours.begin(a) + 1; k < fixture.ref.neighbours.end(a); ++k)
+            {
+                const std::size_t b = fixture.ref.neighbours.indices[k];
+                sum += fixture.ref.V[b] * (x[b] - x[a]) * fixture.ref.gradW[k].transpose();
+            }
+            f[a] = sum * fixture.ref.gradient.L[a].transpose();
+        }
+        std::vector<Vec<D>> pairForce(x.size(), Vec<D>::Zero());
+        const double alphaE = 20.0 * fixture.material->youngsModulus();
+        for (std::size_t a = 0; a < x.size(); ++a)
+        {
+            for (std::size_t k = fixture.ref.neighbours.begin(a) + 1; k < fixture.ref.neighbours.end(a); ++k)
+            {
+                const std::size_t b = fixture.ref.neighbours.indices[k];
+                if (b < a)
+                {
+                    continue;
+                }
+                const Vec<D> xr = fixture.ref.x[b] - fixture.ref.x[a];
+                const Vec<D> xc = x[b] - x[a];
+                const Vec<D> unit = xc.normalized();
+                const Vec<D> gamma = 0.5 * (f[a] + f[b]) * xr - xc;
+                const double delta = 0.5 * gamma.dot(unit);
+                const Vec<D> fa = -alphaE * fixture.V0[a] * fixture.V0[b] * fixture.ref.W[k] *
+                                  delta / xr.squaredNorm() * unit;
+                pairForce[a] += fa;
+                pairForce[b] -= fa;
+            }
+        }
+        double error = 0.0;
+        for (std::size_t a = 0; a < x.size(); ++a)
+        {
+            error = std::max(error, (T[a] - T0[a] - pairForce[a]).cwiseAbs().maxCoeff());
+        }
+        CHECK(error < 1e-12 * maxForce);
+    }
+    else
+    {
+        std::vector<Vec<D>> numeric(x.size());
+        const double step = 1e-6;
+        for (std::size_t c = 0; c < x.size(); ++c)
+        {
+            for (int i = 0; i < D; ++i)
+            {
+                auto xp = x;
+                auto xm = x;
+                xp[c][i] += step;
+                xm[c][i] -= step;
+                numeric[c][i] = -(fixture.energy(xp) - fixture.energy(xm)) / (2 * step);
+            }
+        }
+        double error = 0.0;
+        for (std::size_t a = 0; a < x.size(); ++a)
+        {
+            error = std::max(error, (T[a] - numeric[a]).cwiseAbs().maxCoeff());
+        }
+        CHECK(error / maxForce < 1e-6);
+        // The energy returned with the forces is the same Π.
+        std::vector<Vec<D>> T2;
+        std::vector<Mat<D>> F2;
+        std::vector<Mat<D>> P2;
+        ForceOutput<D> out{T2, F2, P2};
+        const ForceStatus withEnergy = fixture.scheme->computeForces(fixture.input(x), out, true);
+        CHECK(withEnergy.strainEnergy == Approx(fixture.energy(x)).epsilon(1e-12));
+    }
+    Vec<D> total = Vec<D>::Zero();
+    for (const auto& t : T)
+    {
+        total += t;
+    }
+    CHECK(total.cwiseAbs().maxCoeff() < 1e-13 * sumForce);
+    CHECK(angularMomentum<D>(x, T) < 1e-12 * sumMoment);
+}
+
+template <int D>
+Mat<D> rotation(double angle)
+{
+    if constexpr (D == 1)
+    {
+        return Mat<D>::Identity();
+    }
+    else if constexpr (D == 2)
+    {
+        Mat<D> Q;
+        Q << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+        return Q;
+    }
+    else
+    {
+        return Eigen::AngleAxisd(angle, Eigen::Vector3d(0.2, 0.9, -0.4).normalized()).toRotationMatrix();
+    }
+}
+
+template <int D>
+void checkRigidMotion(const std::string& name, bool updated)
+{
+    INFO(name << (updated ? " UL" : " TL") << " " << D << "D, rigid motion");
+    test::SchemeFixture<D> fixture(cloud<D>(), schemeText<D>(name), kMaterial, false, hOverDx<D>());
+    if (updated)
+    {
+        // A stress-free reference configuration that is itself rotated: x^r = Q0 X + c0,
+        // F^r = Q0, K = 0.
+        const Mat<D> Q0 = rotation<D>(0.4);
+        for (std::size_t a = 0; a < fixture.X.size(); ++a)
+        {
+            fixture.ref.x[a] = Q0 * fixture.X[a] + Vec<D>::Constant(0.3);
+            fixture.ref.F[a] = Q0;
+        }
+        if (fixture.scheme->carriesReferenceGradient())
+        {
+            fixture.ref.K.assign(fixture.X.size(), Tensor3<D>::zero());
+        }
+        REQUIRE(fixture.ref.rebuild(*fixture.kernel, fixture.body,
+                                    fixture.scheme->searchRadius(*fixture.kernel)) < 0);
+        REQUIRE(fixture.scheme->prepare(fixture.ref) < 0);
+    }
+    const Mat<D> Q = rotation<D>(1.1);
+    for (int motion = 0; motion < 2; ++motion)
+    {
+        std::vector<Vec<D>> x(fixture.X.size());
+        for (std::size_t a = 0; a < x.size(); ++a)
+        {
+            x[a] = (motion == 0 ? Mat<D>::Identity() : Q) * fixture.ref.x[a] + Vec<D>::Constant(2.5);
+        }
+        const auto T = fixture.forces(x);
+        double largest = 0.0;
+        for (const auto& t : T)
+        {
+            largest = std::max(largest, t.cwiseAbs().maxCoeff());
+        }
+        // Forces scale with the stiffness (mu = 1, kappa = 5) times volume: O(1).
+        CHECK(largest < 1e-11);
+    }
+}
+
+template <int D>
+void checkAllSchemes()
+{
+    test::loadModelLibraries();
+    const auto names = Registry<Stabilisation<D>>::names();
+    REQUIRE(names.size() >= 4);
+    for (const std::string& name : names)
+    {
+        for (const bool updated : {false, true})
+        {
+            checkForces<D>(name, updated);
+            checkRigidMotion<D>(name, updated);
+        }
+    }
+}
+
+} // namespace
+
+TEST_CASE("every scheme's force is -dPi/dx and conserves momentum (1D)", "[scheme]")
+{
+    checkAllSchemes<1>();
+}
+
+TEST_CASE("every scheme's force is -dPi/dx and conserves momentum (2D)", "[scheme]")
+{
+    checkAllSchemes<2>();
+}
+
+TEST_CASE("every scheme's force is -dPi/dx and conserves momentum (3D)", "[scheme]")
+{
+    checkAllSchemes<3>();
+}
+
+TEST_CASE("vidal with beta = 0 reproduces none exactly", "[scheme][vidal]")
+{
+    const auto points = cloud<2>();
+    for (const bool updated : {false, true})
+    {
+        test::SchemeFixture<2> none(points, "type none;", kMaterial, updated);
+        test::SchemeFixture<2> vidal(points, "type vidal; beta (0 0);", kMaterial, updated);
+        const auto x = test::deformCurrent<2>(none.ref.x, 3);
+        const auto Tn = none.forces(x);
+        const auto Tv = vidal.forces(x);
+        for (std::size_t a = 0; a < x.size(); ++a)
+        {
+            CHECK(Tn[a] == Tv[a]);
+        }
+        CHECK(none.energy(x) == vidal.energy(x));
+    }
+}
+
+TEST_CASE("vidal with beta != 0 differs from none but keeps linear completeness", "[scheme][vidal]")
+{
+    const auto points = cloud<2>();
+    test::SchemeFixture<2> none(points, "type none;", kMaterial, false);
+    test::SchemeFixture<2> vidal(points, "type vidal; beta (0.3 0);", kMaterial, false);
+    // An affine deformation gives the same F (exact gradient) hence the same energy.
+    Mat<2> A;
+    A << 1.05, 0.02, -0.03, 0.97;
+    std::vector<Vec<2>> x(points.size());
+    for (std::size_t a = 0; a < x.size(); ++a)
+    {
+        x[a] = A * points[a];
+    }
+    CHECK(vidal.energy(x) == Approx(none.energy(x)).epsilon(1e-12));
+    const auto y = test::deformCurrent<2>(points, 9);
+    CHECK(std::abs(vidal.energy(y) - none.energy(y)) > 1e-6 * none.energy(y));
+}
