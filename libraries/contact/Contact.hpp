@@ -1,0 +1,52 @@
+#pragma once
+// Contact between bodies (system/sphSchemes):
+//
+//   contact { type repulsion; ... }      // none | repulsion
+//
+// Applied after the leapfrog position update as a velocity change (spec §9, §12). A case with
+// one body, or with bodies far apart, costs nothing: `none` does no work at all, and models
+// only search pairs of bodies whose bounding boxes come within reach.
+
+#include "core/Registry.hpp"
+#include "kernels/Kernel.hpp"
+#include "particles/ParticleSet.hpp"
+
+#include <string>
+#include <vector>
+
+namespace sph
+{
+
+// What a contact model may read and change after x^{n+1} = x^n + Δt v^{n+1/2}.
+template <int D>
+struct ContactState
+{
+    const std::vector<Vec<D>>& x;   // x^{n+1}
+    std::vector<Vec<D>>& v;         // v^{n+1/2}, changed in place
+    const ParticleSet<D>& particles; // masses, volumes, bodies, fixed flags, F (for J)
+    double deltaT;
+};
+
+template <int D>
+class Contact
+{
+public:
+    static constexpr const char* family = "contact";
+    static constexpr int dimension = D;
+    struct Args
+    {
+        const Kernel* kernel = nullptr;
+    };
+
+    virtual ~Contact() = default;
+
+    // False when the model never acts (`none`): the solver then skips it entirely.
+    virtual bool active() const = 0;
+    // Applies the velocity change; returns the velocity changes Δv (for the work accounting).
+    virtual void apply(ContactState<D>& state, std::vector<Vec<D>>& deltaV) = 0;
+    // Pairs of bodies searched in the last call (0 when none could touch).
+    virtual std::size_t pairsSearched() const { return 0; }
+    virtual std::string summary() const = 0;
+};
+
+} // namespace sph

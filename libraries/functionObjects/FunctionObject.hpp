@@ -1,0 +1,91 @@
+#pragma once
+// Function objects: per-run diagnostics named in system/controlDict,
+//
+//   functions
+//   {
+//       freeEnd { type probes; points ((0.1333)); fields (displacement velocity); }
+//       energy  { type energy; }
+//   }
+//
+// each writing postProcessing/<name>/<name>.dat: whitespace-separated columns, one '#' header
+// line of column names, first column `time` (gnuplot-ready).
+//
+// Keys common to every function object:
+//   writeInterval | time between rows [s]; 0 writes every step | 0
+
+#include "core/Registry.hpp"
+#include "kernels/Kernel.hpp"
+#include "materials/Material.hpp"
+#include "particles/ReferenceConfiguration.hpp"
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace sph
+{
+
+// What a function object sees at time level n (after the forces at x^n).
+template <int D>
+struct StepState
+{
+    long step = 0;
+    double time = 0.0;
+    double deltaT = 0.0;
+    const ParticleSet<D>& particles;           // x^n, X, V0, m, bodies, fixed, F^n, P^n
+    const std::vector<Vec<D>>& velocity;       // v^n (synchronised)
+    const ReferenceConfiguration<D>& reference;
+    const Kernel& kernel;
+    const std::vector<std::string>& bodyNames;
+    bool hasStrainEnergy = false;
+    double strainEnergy = 0.0; // Π^n of the scheme, when hasStrainEnergy
+    double externalWork = 0.0; // work of external (body) forces since t = 0
+    double contactWork = 0.0;  // work of contact forces since t = 0
+};
+
+template <int D>
+class FunctionObject
+{
+public:
+    static constexpr const char* family = "functionObject";
+    static constexpr int dimension = D;
+    struct Args
+    {
+        std::string name;                                   // the entry name in `functions`
+        std::filesystem::path caseDir;
+        const ParticleSet<D>* initial = nullptr;            // the initial state (v = v^0)
+        const std::vector<const Material<D>*>* materials = nullptr; // by body
+        const std::vector<std::string>* bodyNames = nullptr;
+    };
+
+    virtual ~FunctionObject() = default;
+
+    const std::string& name() const { return name_; }
+
+    // Whether execute() at (step, time) needs the strain energy.
+    virtual bool needsStrainEnergy(long step, double time) const
+    {
+        (void)step;
+        (void)time;
+        return false;
+    }
+    // Opens the output; a restart keeps the rows before `startTime` and appends.
+    virtual void start(double startTime, bool restarted) = 0;
+    virtual void execute(const StepState<D>& state) = 0;
+    // Lines for the end-of-run summary (e.g. error norms).
+    virtual std::vector<std::string> report() const { return {}; }
+    // "probes(points (0.1333), fields displacement velocity)" for the run header.
+    virtual std::string summary() const = 0;
+    // Running quantities that a restart must continue (energy reference, error norms, ...).
+    virtual void saveState(std::map<std::string, double>&) const {}
+    virtual void restoreState(const std::map<std::string, double>&) {}
+
+protected:
+    explicit FunctionObject(std::string name) : name_(std::move(name)) {}
+
+private:
+    std::string name_;
+};
+
+} // namespace sph

@@ -1,0 +1,182 @@
+// `probes`: fields at the particles nearest to given points (nearest by initial position, so
+// a probe follows its material point).
+// Keys:
+//   points | where to probe, by initial position [m]                            | required
+//   fields | any of: position displacement velocity F P J                       | (displacement velocity)
+//   body   | only look in this body                                             | optional
+// Columns: <field>_<component> (x y z; xx xy ..), with _<i> appended when there are several
+// points, e.g. displacement_x or displacement_x_1.
+#include "functionObjects/FunctionObjectModel.hpp"
+
+#include <sstream>
+
+namespace sph
+{
+
+template <int D>
+class Probes : public FunctionObjectModel<D>
+{
+public:
+    static std::string description()
+    {
+        return "Fields at the particles nearest to given points (by initial position).";
+    }
+    static Schema schema()
+    {
+        return FunctionObjectModel<D>::commonSchema()
+            .add(Key::vectorList("points", "probe locations, by initial position [m]"))
+            .add(Key::wordList("fields", "any of: position displacement velocity F P J")
+                     .defaultValue("(displacement velocity)"))
+            .add(Key::word("body", "only look in this body").optional());
+    }
+
+    Probes(const Params& params, const typename FunctionObject<D>::Args& args)
+        : FunctionObjectModel<D>(params, args), fields_(params.wordList("fields"))
+    {
+        static const std::vector<std::string> known{"position", "displacement", "velocity",
+                                                    "F",        "P",            "J"};
+        for (const auto& field : fields_)
+        {
+            if (std::find(known.begin(), known.end(), field) == known.end())
+            {
+                params.fail("fields", "probes: unknown field '" + field + "'",
+                            {"Valid fields: " + joinSorted(known), didYouMean(field, known)});
+            }
+        }
+        const ParticleSet<D>& particles = *args.initial;
+        std::size_t begin = 0;
+        std::size_t end = particles.size();
+        if (params.has("body"))
+        {
+            const auto& names = *args.bodyNames;
+            const auto it = std::find(names.begin(), names.end(), params.word("body"));
+            if (it == names.end())
+            {
+                params.fail("body", "probes: no body named '" + params.word("body") + "'",
+                            {"Bodies: " + joinSorted(names), didYouMean(params.word("body"), names)});
+            }
+            const BodyRange& range = particles.bodies[static_cast<std::size_t>(it - names.begin())];
+            begin = range.begin;
+            end = range.end;
+        }
+        for (const auto& point : params.vectorList("points"))
+        {
+            const Vec<D> target = toVec<D>(point);
+            std::size_t best = begin;
+            for (std::size_t a = begin; a < end; ++a)
+            {
+                if ((particles.X[a] - target).squaredNorm() < (particles.X[best] - target).squaredNorm())
+                {
+                    best = a;
+                }
+            }
+            particles_.push_back(best);
+        }
+        if (particles_.empty())
+        {
+            params.fail("points", "probes: give at least one point");
+        }
+        std::vector<std::string> columns;
+        for (std::size_t i = 0; i < particles_.size(); ++i)
+        {
+            const std::string suffix = particles_.size() > 1 ? "_" + std::to_string(i) : "";
+            for (const auto& field : fields_)
+            {
+                for (const auto& component : components(field))
+                {
+                    columns.push_back(field + (component.empty() ? "" : "_" + component) + suffix);
+                }
+            }
+        }
+        this->setColumns(columns);
+    }
+
+    void execute(const StepState<D>& state) override
+    {
+        if (!this->rowDue(state.time, state.deltaT))
+        {
+            return;
+        }
+        std::vector<double> row;
+        const ParticleSet<D>& p = state.particles;
+        for (const std::size_t a : particles_)
+        {
+            for (const auto& field : fields_)
+            {
+                if (field == "position" || field == "displacement" || field == "velocity")
+                {
+                    const Vec<D> value = field == "position"       ? p.x[a]
+                                         : field == "displacement" ? Vec<D>(p.x[a] - p.X[a])
+                                                                   : state.velocity[a];
+                    for (int d = 0; d < D; ++d)
+                    {
+                        row.push_back(value[d]);
+                    }
+                }
+                else if (field == "F" || field == "P")
+                {
+                    const Mat<D>& value = field == "F" ? p.F[a] : p.P[a];
+                    for (int i = 0; i < D; ++i)
+                    {
+                        for (int j = 0; j < D; ++j)
+                        {
+                            row.push_back(value(i, j));
+                        }
+                    }
+                }
+                else
+                {
+                    row.push_back(p.F[a].determinant());
+                }
+            }
+        }
+        this->writeRow(state.time, state.deltaT, row);
+    }
+
+    std::string summary() const override
+    {
+        std::ostringstream out;
+        out << "probes(" << particles_.size() << " point" << (particles_.size() > 1 ? "s" : "")
+            << ", particles";
+        for (const auto a : particles_)
+        {
+            out << " " << a;
+        }
+        out << ")";
+        return out.str();
+    }
+
+private:
+    static std::vector<std::string> components(const std::string& field)
+    {
+        static const char* axes[3] = {"x", "y", "z"};
+        std::vector<std::string> result;
+        if (field == "J")
+        {
+            return {""};
+        }
+        if (field == "F" || field == "P")
+        {
+            for (int i = 0; i < D; ++i)
+            {
+                for (int j = 0; j < D; ++j)
+                {
+                    result.push_back(std::string(axes[i]) + axes[j]);
+                }
+            }
+            return result;
+        }
+        for (int d = 0; d < D; ++d)
+        {
+            result.emplace_back(axes[d]);
+        }
+        return result;
+    }
+
+    std::vector<std::string> fields_;
+    std::vector<std::size_t> particles_;
+};
+
+SPH_REGISTER_DIM_MODEL(FunctionObject, Probes, "probes");
+
+} // namespace sph

@@ -1,0 +1,89 @@
+#include "io/PvdSeries.hpp"
+
+#include "core/InputError.hpp"
+#include "io/AtomicFile.hpp"
+
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
+
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace pt = boost::property_tree;
+
+namespace sph
+{
+
+PvdSeries::PvdSeries(std::filesystem::path file) : file_(std::move(file)) {}
+
+void PvdSeries::load()
+{
+    entries_.clear();
+    if (!std::filesystem::exists(file_))
+    {
+        return;
+    }
+    pt::ptree tree;
+    try
+    {
+        pt::read_xml(file_.string(), tree);
+        for (const auto& [tag, node] : tree.get_child("VTKFile.Collection"))
+        {
+            if (tag == "DataSet")
+            {
+                entries_.push_back({node.get<double>("<xmlattr>.timestep"),
+                                    node.get<std::string>("<xmlattr>.file")});
+            }
+        }
+    }
+    catch (const pt::ptree_error& error)
+    {
+        throw InputError("cannot read the time series '" + file_.string() + "': " + error.what(),
+                         {"Delete it (and the VTK folder) to start the run afresh."});
+    }
+}
+
+void PvdSeries::keepBefore(double time)
+{
+    std::vector<Entry> kept;
+    for (const Entry& entry : entries_)
+    {
+        if (entry.time < time)
+        {
+            kept.push_back(entry);
+        }
+    }
+    entries_ = kept;
+}
+
+void PvdSeries::add(double time, const std::string& file)
+{
+    entries_.push_back({time, file});
+    write();
+}
+
+void PvdSeries::write() const
+{
+    pt::ptree root;
+    pt::ptree& vtkFile = root.add("VTKFile", "");
+    vtkFile.put("<xmlattr>.type", "Collection");
+    vtkFile.put("<xmlattr>.version", "0.1");
+    vtkFile.put("<xmlattr>.byte_order", "LittleEndian");
+    pt::ptree& collection = vtkFile.add("Collection", "");
+    for (const Entry& entry : entries_)
+    {
+        pt::ptree& dataSet = collection.add("DataSet", "");
+        std::ostringstream time;
+        time << std::setprecision(17) << entry.time;
+        dataSet.put("<xmlattr>.timestep", time.str());
+        dataSet.put("<xmlattr>.group", "");
+        dataSet.put("<xmlattr>.part", "0");
+        dataSet.put("<xmlattr>.file", entry.file);
+    }
+    std::ostringstream text;
+    pt::write_xml(text, root, pt::xml_writer_make_settings<std::string>(' ', 2));
+    writeTextAtomically(file_, text.str());
+}
+
+} // namespace sph

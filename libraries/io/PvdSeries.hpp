@@ -1,0 +1,40 @@
+#pragma once
+// The ParaView time-series file VTK/<case>.pvd (a "Collection" of .vtu files with their
+// times). Rewritten atomically after every output, so it is valid at every moment, even if
+// the run is killed. Written and read with Boost.PropertyTree's XML support.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace sph
+{
+
+class PvdSeries
+{
+public:
+    struct Entry
+    {
+        double time;
+        std::string file; // relative to the .pvd's folder
+    };
+
+    explicit PvdSeries(std::filesystem::path file);
+
+    // Reads an existing series (missing file: empty series).
+    void load();
+    // Keeps only the entries before `time` (a restart writes that time again).
+    void keepBefore(double time);
+    // Appends an entry and rewrites the file.
+    void add(double time, const std::string& file);
+    void write() const;
+
+    const std::vector<Entry>& entries() const { return entries_; }
+    const std::filesystem::path& file() const { return file_; }
+
+private:
+    std::filesystem::path file_;
+    std::vector<Entry> entries_;
+};
+
+} // namespace sph

@@ -1,0 +1,242 @@
+#include "io/VtuFile.hpp"
+
+#include "core/InputError.hpp"
+#include "io/AtomicFile.hpp"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCellType.h>
+#include <vtkCommand.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+namespace sph
+{
+
+namespace
+{
+
+// Collects VTK's error messages instead of letting VTK print them.
+class ErrorCollector
+{
+public:
+    explicit ErrorCollector(vtkObject* object)
+    {
+        callback_->SetClientData(this);
+        callback_->SetCallback([](vtkObject*, unsigned long, void* self, void* text) {
+            auto* collector = static_cast<ErrorCollector*>(self);
+            if (text)
+            {
+                collector->messages_ += static_cast<const char*>(text);
+            }
+        });
+        object->AddObserver(vtkCommand::ErrorEvent, callback_);
+        object->AddObserver(vtkCommand::WarningEvent, callback_);
+    }
+    const std::string& messages() const { return messages_; }
+
+private:
+    vtkNew<vtkCallbackCommand> callback_;
+    std::string messages_;
+};
+
+vtkSmartPointer<vtkDataArray> makeArray(const std::string& name, const VtuArray& array,
+                                        std::size_t tuples)
+{
+    vtkSmartPointer<vtkDataArray> result;
+    if (array.integer)
+    {
+        auto values = vtkSmartPointer<vtkIntArray>::New();
+        values->SetNumberOfComponents(array.components);
+        values->SetNumberOfTuples(static_cast<vtkIdType>(tuples));
+        for (std::size_t i = 0; i < array.values.size(); ++i)
+        {
+            values->SetValue(static_cast<vtkIdType>(i), static_cast<int>(array.values[i]));
+        }
+        result = values;
+    }
+    else
+    {
+        auto values = vtkSmartPointer<vtkDoubleArray>::New();
+        values->SetNumberOfComponents(array.components);
+        values->SetNumberOfTuples(static_cast<vtkIdType>(tuples));
+        for (std::size_t i = 0; i < array.values.size(); ++i)
+        {
+            values->SetValue(static_cast<vtkIdType>(i), array.values[i]);
+        }
+        result = values;
+    }
+    result->SetName(name.c_str());
+    for (std::size_t c = 0; c < array.componentNames.size(); ++c)
+    {
+        result->SetComponentName(static_cast<vtkIdType>(c), array.componentNames[c].c_str());
+    }
+    return result;
+}
+
+VtuArray readArray(vtkDataArray* source)
+{
+    VtuArray array;
+    array.components = source->GetNumberOfComponents();
+    array.integer = source->GetDataType() == VTK_INT || source->GetDataType() == VTK_LONG ||
+                    source->GetDataType() == VTK_ID_TYPE || source->GetDataType() == VTK_LONG_LONG;
+    const vtkIdType tuples = source->GetNumberOfTuples();
+    array.values.resize(static_cast<std::size_t>(tuples * array.components));
+    for (vtkIdType t = 0; t < tuples; ++t)
+    {
+        for (int c = 0; c < array.components; ++c)
+        {
+            array.values[static_cast<std::size_t>(t * array.components + c)] =
+                source->GetComponent(t, c);
+        }
+    }
+    for (int c = 0; c < array.components; ++c)
+    {
+        if (const char* name = source->GetComponentName(c))
+        {
+            array.componentNames.emplace_back(name);
+        }
+    }
+    return array;
+}
+
+} // namespace
+
+void writeVtu(const std::filesystem::path& file, const VtuData& data)
+{
+    const std::size_t n = data.pointCount();
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(n));
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        points->SetPoint(static_cast<vtkIdType>(i), data.points[3 * i], data.points[3 * i + 1],
+                         data.points[3 * i + 2]);
+    }
+    grid->SetPoints(points);
+    // One vertex cell per point.
+    auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+    auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+    offsets->SetNumberOfValues(static_cast<vtkIdType>(n + 1));
+    connectivity->SetNumberOfValues(static_cast<vtkIdType>(n));
+    for (std::size_t i = 0; i <= n; ++i)
+    {
+        offsets->SetValue(static_cast<vtkIdType>(i), static_cast<vtkIdType>(i));
+        if (i < n)
+        {
+            connectivity->SetValue(static_cast<vtkIdType>(i), static_cast<vtkIdType>(i));
+        }
+    }
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    cells->SetData(offsets, connectivity);
+    grid->SetCells(VTK_VERTEX, cells);
+
+    for (const auto& [name, array] : data.pointData)
+    {
+        if (array.values.size() != n * static_cast<std::size_t>(array.components))
+        {
+            throw std::logic_error("point array '" + name + "' has the wrong size");
+        }
+        grid->GetPointData()->AddArray(makeArray(name, array, n));
+    }
+    for (const auto& [name, array] : data.fieldData)
+    {
+        grid->GetFieldData()->AddArray(
+            makeArray(name, array, array.values.size() / static_cast<std::size_t>(array.components)));
+    }
+    for (const auto& [name, strings] : data.stringFields)
+    {
+        auto array = vtkSmartPointer<vtkStringArray>::New();
+        array->SetName(name.c_str());
+        for (const auto& s : strings)
+        {
+            array->InsertNextValue(s);
+        }
+        grid->GetFieldData()->AddArray(array);
+    }
+
+    writeAtomically(file, [&](const std::filesystem::path& temporary) {
+        auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+        ErrorCollector errors(writer);
+        writer->SetFileName(temporary.c_str());
+        writer->SetInputData(grid);
+        writer->SetDataModeToAppended();
+        writer->EncodeAppendedDataOff();
+        writer->SetCompressorTypeToZLib();
+        if (writer->Write() != 1 || !errors.messages().empty())
+        {
+            throw InputError("cannot write '" + file.string() + "'",
+                             {"VTK: " + errors.messages(),
+                              "Check that the folder is writable and the disk is not full."});
+        }
+    });
+}
+
+VtuData readVtu(const std::filesystem::path& file)
+{
+    if (!std::filesystem::is_regular_file(file))
+    {
+        throw InputError("cannot find the VTK file '" + file.string() + "'");
+    }
+    auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    ErrorCollector errors(reader);
+    if (!reader->CanReadFile(file.c_str()))
+    {
+        throw InputError("'" + file.string() + "' is not a readable VTK unstructured grid (.vtu)",
+                         {"It may be damaged, or written by another program in another format."});
+    }
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    vtkUnstructuredGrid* grid = reader->GetOutput();
+    if (!errors.messages().empty() || !grid || !grid->GetPoints())
+    {
+        throw InputError("cannot read '" + file.string() + "'",
+                         {"VTK: " + errors.messages()});
+    }
+    VtuData data;
+    const vtkIdType n = grid->GetNumberOfPoints();
+    data.points.resize(static_cast<std::size_t>(3 * n));
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+        grid->GetPoint(i, &data.points[static_cast<std::size_t>(3 * i)]);
+    }
+    vtkPointData* pointData = grid->GetPointData();
+    for (int i = 0; i < pointData->GetNumberOfArrays(); ++i)
+    {
+        if (vtkDataArray* array = pointData->GetArray(i))
+        {
+            data.pointData[array->GetName() ? array->GetName() : ""] = readArray(array);
+        }
+    }
+    vtkFieldData* fieldData = grid->GetFieldData();
+    for (int i = 0; i < fieldData->GetNumberOfArrays(); ++i)
+    {
+        vtkAbstractArray* array = fieldData->GetAbstractArray(i);
+        const std::string name = array && array->GetName() ? array->GetName() : "";
+        if (auto* numbers = vtkDataArray::SafeDownCast(array))
+        {
+            data.fieldData[name] = readArray(numbers);
+        }
+        else if (auto* strings = vtkStringArray::SafeDownCast(array))
+        {
+            std::vector<std::string>& values = data.stringFields[name];
+            for (vtkIdType k = 0; k < strings->GetNumberOfValues(); ++k)
+            {
+                values.push_back(strings->GetValue(k));
+            }
+        }
+    }
+    return data;
+}
+
+} // namespace sph

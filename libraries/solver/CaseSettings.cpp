@@ -1,0 +1,103 @@
+#include "solver/CaseSettings.hpp"
+
+#include "core/InputError.hpp"
+#include "core/LibraryLoader.hpp"
+
+namespace sph
+{
+
+Schema ControlSettings::schema()
+{
+    return Schema()
+        .add(Key::real("endTime", "end of the simulation [s]").positive())
+        .add(Key::real("courant", "Courant number alpha in dt = alpha h / c (seed eq. 17)")
+                 .range(0.0, 2.0, false, true))
+        .add(Key::real("writeInterval", "time between VTK outputs [s]").positive())
+        .add(Key::word("startFrom", "startTime, or latestTime to restart from the last output")
+                 .choices({"startTime", "latestTime"})
+                 .defaultValue("startTime"))
+        .add(Key::integer("timeStepUpdateInterval",
+                          "steps between recomputing the wave speed from the current F (0: keep "
+                          "the initial time step)")
+                 .min(0)
+                 .defaultValue("1"))
+        .add(Key::integer("maxSteps", "stop after this many time steps").min(1).optional())
+        .add(Key::stringList("libs", "extra model libraries to load at start").defaultValue("()"))
+        .add(Key::dict("functions", "function objects: name { type ...; }").optional());
+}
+
+ControlSettings ControlSettings::read(const CaseDictionaries& dicts)
+{
+    const Dictionary& dict = dicts.get("controlDict");
+    ValidationContext context;
+    context.label = "controlDict";
+    context.ignoredKeys.clear();
+    const Params p = schema().validate(dict, context);
+    // Libraries first: function objects and models may come from them.
+    if (const Entry* libs = dict.find("libs"))
+    {
+        for (const Item& item : libs->items().front().items())
+        {
+            LibraryLoader::load(item.text(), item.location(), dicts.caseDir());
+        }
+    }
+    ControlSettings settings;
+    settings.endTime = p.real("endTime");
+    settings.courant = p.real("courant");
+    settings.writeInterval = p.real("writeInterval");
+    settings.startFromLatest = p.word("startFrom") == "latestTime";
+    settings.timeStepUpdateInterval = p.integer("timeStepUpdateInterval");
+    if (p.has("maxSteps"))
+    {
+        settings.maxSteps = p.integer("maxSteps");
+    }
+    if (p.has("functions"))
+    {
+        settings.functions = &p.dict("functions");
+    }
+    return settings;
+}
+
+Schema SchemeSettings::schema()
+{
+    return Schema()
+        .add(Key::integer("dimension", "space dimension of the case").range(1, 3))
+        .add(Key::dict("kernel", "smoothing kernel { type cubicSpline; hOverDx 1.5; }"))
+        .add(Key::dict("formulation", "{ type totalLagrangian; } or { type updatedLagrangian; }"))
+        .add(Key::dict("stabilisation", "internal-force scheme { type none | vidal | hourglass | "
+                                        "gradF; }"))
+        .add(Key::dict("contact", "contact between bodies { type none | repulsion; }").optional());
+}
+
+SchemeSettings SchemeSettings::read(const Dictionary& sphSchemes)
+{
+    ValidationContext context;
+    context.label = "sphSchemes";
+    context.ignoredKeys.clear();
+    const Params p = schema().validate(sphSchemes, context);
+    SchemeSettings settings;
+    settings.dimension = static_cast<int>(p.integer("dimension"));
+    settings.kernel = &p.dict("kernel");
+    settings.formulation = &p.dict("formulation");
+    settings.stabilisation = &p.dict("stabilisation");
+    settings.contact = p.has("contact") ? &p.dict("contact") : nullptr;
+    return settings;
+}
+
+int readDimension(const Dictionary& sphSchemes)
+{
+    const Entry* entry = sphSchemes.find("dimension");
+    Dictionary only("", sphSchemes.location());
+    if (entry)
+    {
+        only.add(*entry);
+    }
+    ValidationContext context;
+    context.label = "sphSchemes";
+    const Params p = Schema()
+                         .add(Key::integer("dimension", "space dimension of the case").range(1, 3))
+                         .validate(only, context);
+    return static_cast<int>(p.integer("dimension"));
+}
+
+} // namespace sph

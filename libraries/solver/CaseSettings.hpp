@@ -1,0 +1,62 @@
+#pragma once
+// The run-control and scheme settings of a case, validated against their schemas:
+//
+// system/controlDict
+//   endTime                | end of the simulation [s]                                | required
+//   courant                | α in Δt = α h / c (seed eq. 17)                          | required
+//   writeInterval          | time between VTK outputs [s]                             | required
+//   startFrom              | startTime, or latestTime to restart from the last output | startTime
+//   timeStepUpdateInterval | steps between recomputing c from the current F (0: keep | 1
+//                          | the initial Δt, as for comparisons with other codes)     |
+//   maxSteps               | stop after this many steps (benchmarks)                  | optional
+//   libs                   | extra model libraries to load ("libX.so" ...)            | ()
+//   functions              | function objects { name { type ...; } ... }              | optional
+//
+// system/sphSchemes
+//   dimension     | 1, 2 or 3                                  | required
+//   kernel        | { type cubicSpline; hOverDx 1.5; }         | required
+//   formulation   | { type totalLagrangian; }                  | required
+//   stabilisation | { type gradF; }                            | required
+//   contact       | { type none; }                             | { type none; }
+
+#include "core/CaseDictionaries.hpp"
+#include "core/Schema.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sph
+{
+
+struct ControlSettings
+{
+    double endTime = 0.0;
+    double courant = 0.0;
+    double writeInterval = 0.0;
+    bool startFromLatest = false;
+    long timeStepUpdateInterval = 1;
+    std::optional<long> maxSteps;
+    const Dictionary* functions = nullptr;
+
+    static Schema schema();
+    // Validates controlDict and loads the libraries it names (before any model is selected).
+    static ControlSettings read(const CaseDictionaries& dicts);
+};
+
+struct SchemeSettings
+{
+    int dimension = 0;
+    const Dictionary* kernel = nullptr;
+    const Dictionary* formulation = nullptr;
+    const Dictionary* stabilisation = nullptr;
+    const Dictionary* contact = nullptr; // null: none
+
+    static Schema schema();
+    static SchemeSettings read(const Dictionary& sphSchemes);
+};
+
+// Only the `dimension` entry of system/sphSchemes (sphParticles reads nothing else there).
+int readDimension(const Dictionary& sphSchemes);
+
+} // namespace sph

@@ -1,0 +1,273 @@
+// The time loop of the solid solver (see Simulation.hpp for the scheme).
+#include "solver/Simulation.hpp"
+
+#include "core/Application.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace sph
+{
+
+template <int D>
+double Simulation<D>::stableTimeStep() const
+{
+    double c = 0.0;
+    for (std::size_t b = 0; b < particles_.bodies.size(); ++b)
+    {
+        const BodyRange& range = particles_.bodies[b];
+        c = std::max(c, materials_[b]->maxWaveSpeed(&particles_.F[range.begin], range.size()));
+    }
+    return control_.courant * kernel_->h() / c;
+}
+
+template <int D>
+long Simulation<D>::crossingParticle() const
+{
+    if constexpr (D == 1)
+    {
+        for (const auto& order : barOrder_)
+        {
+            for (std::size_t i = 1; i < order.size(); ++i)
+            {
+                if (!(particles_.x[order[i]][0] > particles_.x[order[i - 1]][0]))
+                {
+                    return static_cast<long>(order[i]);
+                }
+            }
+        }
+    }
+    return -1;
+}
+
+template <int D>
+void Simulation<D>::fail(const ForceStatus& status, const std::string& when)
+{
+    std::ostringstream message;
+    message << status.badQuantity;
+    if (status.badQuantity == "det F")
+    {
+        message << " = " << status.badValue << " <= 0";
+    }
+    else if (status.badQuantity == "internal force")
+    {
+        message << " is not finite";
+    }
+    message << " at " << particleName(static_cast<std::size_t>(status.badParticle)) << ", step "
+            << step_ << ", t = " << time_ << " s, " << when << ".";
+    // The last good level: positions in previousX_, F and P of its force evaluation.
+    std::string written;
+    if (lastGoodStep_ >= 0)
+    {
+        particles_.x.swap(previousX_);
+        writeOutput(false, lastGoodStep_, lastGoodTime_, {});
+        particles_.x.swap(previousX_);
+        written = "The last good state (step " + std::to_string(lastGoodStep_) + ", t = " +
+                  std::to_string(lastGoodTime_) + " s) is written to " +
+                  pvd_.entries().back().file + " (listed in VTK/" + caseName_ + ".pvd).";
+    }
+    message << "\n" << written
+            << "\nLikely causes: the scheme is unstable for this problem (try stabilisation gradF "
+               "or formulation totalLagrangian), the time step is too large (lower courant), or "
+               "the deformation is beyond the material model.";
+    throw NumericalFailure(message.str());
+}
+
+template <int D>
+RunSummary Simulation<D>::run(RunLog& log)
+{
+    const std::size_t n = particles_.size();
+    const bool restarted = control_.startFromLatest && restoreLatest(log);
+    if (!restarted)
+    {
+        removeOldOutput();
+    }
+    for (auto& object : functionObjects_)
+    {
+        object->start(time_, restarted);
+    }
+    const long firstStep = step_;
+    log.startTimer(time_, control_.endTime, n);
+    const double endTime = control_.endTime;
+
+    while (true)
+    {
+        // 1. Updated-Lagrangian: move the reference configuration when due.
+        ForceStatus status;
+        reference_->updateIfDue(step_, particles_, status);
+        if (!status.ok())
+        {
+            fail(status, "moving the reference configuration");
+        }
+
+        // 2. Internal forces, F and P at x^n (into spare buffers: the last good F, P survive).
+        const bool progress = log.progressDue();
+        bool wantEnergy = progress || step_ == firstStep;
+        for (const auto& object : functionObjects_)
+        {
+            wantEnergy = wantEnergy || object->needsStrainEnergy(step_, time_);
+        }
+        ForceInput<D> in{particles_.x, particles_.V0, particles_.body, particles_.bodies,
+                         materials_, reference_->reference()};
+        ForceOutput<D> out{force_, nextF_, nextP_};
+        status = scheme_->computeForces(in, out, wantEnergy);
+        if (!status.ok())
+        {
+            fail(status, "computing the internal forces");
+        }
+        particles_.F.swap(nextF_);
+        particles_.P.swap(nextP_);
+
+        // 3. Accelerations; fixed particles discard their force.
+        for (std::size_t a = 0; a < n; ++a)
+        {
+            acceleration_[a] = particles_.fixed[a] ? Vec<D>::Zero()
+                                                   : Vec<D>(force_[a] / particles_.m[a] + gravity_);
+        }
+
+        // 4. Time step: α h / c from the current F, when due.
+        if (step_ == firstStep && !restarted)
+        {
+            deltaT_ = stableTimeStep();
+        }
+        else if (control_.timeStepUpdateInterval > 0 && step_ % control_.timeStepUpdateInterval == 0)
+        {
+            deltaT_ = stableTimeStep();
+        }
+        if (!(deltaT_ > 0.0) || !std::isfinite(deltaT_))
+        {
+            ForceStatus collapse;
+            collapse.badParticle = 0;
+            collapse.badQuantity = "time step " + std::to_string(deltaT_);
+            fail(collapse, "computing the time step");
+        }
+        const bool last = time_ >= endTime * (1.0 - 1e-12) ||
+                          (control_.maxSteps && step_ - firstStep >= *control_.maxSteps);
+        const double dt = last ? 0.0 : std::min(deltaT_, endTime - time_);
+
+        // 5. Velocities: v^n (synchronised) and v^{n+1/2}.
+        for (std::size_t a = 0; a < n; ++a)
+        {
+            if (halfStepVelocity_)
+            {
+                velocitySync_[a] = particles_.v[a] + 0.5 * previousDeltaT_ * acceleration_[a];
+                velocityHalf_[a] = particles_.v[a] + 0.5 * (previousDeltaT_ + dt) * acceleration_[a];
+            }
+            else
+            {
+                velocitySync_[a] = particles_.v[a];
+                velocityHalf_[a] = particles_.v[a] + 0.5 * dt * acceleration_[a];
+            }
+        }
+
+        // 6. Function objects and output at level n.
+        const bool outputDue = last || time_ + 0.5 * dt >= nextOutputTime_;
+        std::map<std::string, double> functionState;
+        if (outputDue)
+        {
+            for (const auto& object : functionObjects_)
+            {
+                std::map<std::string, double> own;
+                object->saveState(own);
+                for (const auto& [key, value] : own)
+                {
+                    functionState["fo:" + object->name() + ":" + key] = value;
+                }
+            }
+        }
+        StepState<D> state{step_, time_, dt, particles_, velocitySync_, reference_->reference(),
+                           *kernel_, bodyNames_, wantEnergy, status.strainEnergy, externalWork_,
+                           contactWork_};
+        for (auto& object : functionObjects_)
+        {
+            object->execute(state);
+        }
+        if (wantEnergy)
+        {
+            double kinetic = 0.0;
+            for (std::size_t a = 0; a < n; ++a)
+            {
+                kinetic += 0.5 * particles_.m[a] * velocitySync_[a].squaredNorm();
+            }
+            const double total = kinetic + status.strainEnergy - externalWork_ - contactWork_;
+            if (!haveInitialEnergy_)
+            {
+                initialEnergy_ = total;
+                haveInitialEnergy_ = true;
+            }
+            if (progress)
+            {
+                const double scale = std::abs(initialEnergy_) > 0.0 ? std::abs(initialEnergy_) : 1.0;
+                log.progress(step_, step_ - firstStep, time_, deltaT_,
+                             (total - initialEnergy_) / scale, true);
+            }
+        }
+        if (outputDue)
+        {
+            writeOutput(true, step_, time_, functionState);
+            while (nextOutputTime_ <= time_ + 0.5 * dt)
+            {
+                nextOutputTime_ += control_.writeInterval;
+            }
+        }
+        lastGoodStep_ = step_;
+        lastGoodTime_ = time_;
+        if (last)
+        {
+            break;
+        }
+
+        // 7. Advance: x^{n+1} = x^n + Δt v^{n+1/2}; fixed particles stay.
+        previousX_ = particles_.x;
+        particles_.v.swap(velocityHalf_);
+        double work = 0.0;
+        for (std::size_t a = 0; a < n; ++a)
+        {
+            if (particles_.fixed[a])
+            {
+                particles_.v[a].setZero();
+                continue;
+            }
+            const Vec<D> move = dt * particles_.v[a];
+            particles_.x[a] += move;
+            work += particles_.m[a] * gravity_.dot(move);
+        }
+        externalWork_ += work;
+        halfStepVelocity_ = true;
+        previousDeltaT_ = dt;
+
+        // 8. Contact acts on v^{n+1/2} at x^{n+1} (spec §9, §12).
+        if (contact_->active())
+        {
+            ContactState<D> contactState{particles_.x, particles_.v, particles_, dt};
+            contact_->apply(contactState, contactDeltaV_);
+        }
+
+        // 9. Particles must not pass each other along a bar.
+        if (const long crossed = crossingParticle(); crossed >= 0)
+        {
+            ForceStatus crossing;
+            crossing.badParticle = crossed;
+            crossing.badQuantity = "particle order (it passed its neighbour)";
+            time_ += dt;
+            ++step_;
+            fail(crossing, "after moving the particles");
+        }
+        time_ += dt;
+        ++step_;
+    }
+    for (const auto& object : functionObjects_)
+    {
+        for (const auto& line : object->report())
+        {
+            log.line(line);
+        }
+    }
+    return log.finish(step_ - firstStep, time_);
+}
+
+template class Simulation<1>;
+template class Simulation<2>;
+template class Simulation<3>;
+
+} // namespace sph

@@ -1,0 +1,371 @@
+// Building a Simulation from the case: particles, bodies (materials, initial velocities,
+// constraints), every selected model, the function objects and the reference configuration.
+#include "solver/Simulation.hpp"
+
+#include "core/InputError.hpp"
+#include "core/Suggest.hpp"
+#include "particles/regions/Region.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+
+namespace sph
+{
+
+namespace
+{
+
+Schema bodySchema()
+{
+    return Schema()
+        .add(Key::dict("material", "the body's material { type neoHookean; mu ...; kappa ...; "
+                                   "rho ...; }"))
+        .add(Key::vector("velocity", "initial velocity of the whole body [m/s]").defaultValue("0"))
+        .add(Key::dict("initialVelocity", "initial velocities by region: name { region { ... }; "
+                                          "velocity (...); }, applied in order after 'velocity'")
+                 .optional())
+        .add(Key::dict("constraints", "fixed particles by region: name { type fixed; region { "
+                                      "... }; }")
+                 .optional());
+}
+
+Schema initialVelocitySchema()
+{
+    return Schema()
+        .add(Key::dict("region", "which particles (by initial position)"))
+        .add(Key::vector("velocity", "their initial velocity [m/s]"));
+}
+
+Schema constraintSchema()
+{
+    return Schema()
+        .add(Key::word("type", "fixed: position held, velocity zero").choices({"fixed"}))
+        .add(Key::dict("region", "which particles (by initial position)"));
+}
+
+Params validateNamed(const Schema& schema, const Dictionary& dict, const std::string& label, int D,
+                     bool typeIsKey = false)
+{
+    ValidationContext context;
+    context.dimension = D;
+    context.label = label;
+    if (typeIsKey)
+    {
+        context.ignoredKeys.clear();
+    }
+    return schema.validate(dict, context);
+}
+
+} // namespace
+
+template <int D>
+Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& control,
+                          const SchemeSettings& schemes, const InitialParticles& initial)
+    : dicts_(dicts), control_(control), caseName_(dicts.caseName()),
+      pvd_(dicts.caseDir() / "VTK" / (dicts.caseName() + ".pvd"))
+{
+    if (initial.dimension != D)
+    {
+        throw InputError(dicts.get("sphSchemes").find("dimension")->valueLocation(),
+                         "the case is " + std::to_string(D) + "D but constant/particles.vtu holds " +
+                             std::to_string(initial.dimension) + "D particles",
+                         {"Run sphParticles again after changing 'dimension'."});
+    }
+    spacing_ = initial.spacing;
+    loadParticles(initial);
+
+    kernel_ = selectModel<Kernel>(*schemes.kernel, Kernel::Args{D, spacing_}, D);
+    formulation_ = selectModel<Formulation<D>>(*schemes.formulation, {}, D);
+    scheme_ = selectModel<Stabilisation<D>>(*schemes.stabilisation, {kernel_.get()}, D);
+    if (schemes.contact)
+    {
+        contact_ = selectModel<Contact<D>>(*schemes.contact, {kernel_.get()}, D);
+    }
+    else
+    {
+        const Dictionary none("contact", dicts.get("sphSchemes").location());
+        contact_ = createModel<Contact<D>>("none", none, {kernel_.get()}, D);
+    }
+
+    setupBodies(dicts.get("bodies"));
+    checkCrossingOrder();
+    setupFunctionObjects();
+
+    reference_ = std::make_unique<ReferenceManager<D>>(*formulation_, *scheme_, *kernel_);
+    const ForceStatus status = reference_->initialise(particles_);
+    if (!status.ok())
+    {
+        const Entry* hOverDx = schemes.kernel->find("hOverDx");
+        throw InputError(hOverDx ? hOverDx->valueLocation() : schemes.kernel->location(),
+                         particleName(static_cast<std::size_t>(status.badParticle)) +
+                             " has too few neighbours: its " + status.badQuantity +
+                             " is singular in the initial configuration",
+                         {"Increase hOverDx (now " + std::to_string(kernel_->hOverDx()) +
+                              ") or check the geometry in system/particlesDict (isolated "
+                              "particles, bodies thinner than two spacings).",
+                          "Open constant/particles.vtu in ParaView to see the particles."});
+    }
+
+    const std::size_t n = particles_.size();
+    force_.assign(n, Vec<D>::Zero());
+    acceleration_.assign(n, Vec<D>::Zero());
+    velocityHalf_.assign(n, Vec<D>::Zero());
+    velocitySync_ = particles_.v;
+    previousX_ = particles_.x;
+    contactDeltaV_.assign(n, Vec<D>::Zero());
+    nextF_.assign(n, Mat<D>::Identity());
+    nextP_.assign(n, Mat<D>::Zero());
+}
+
+template <int D>
+Simulation<D>::~Simulation() = default;
+
+template <int D>
+void Simulation<D>::loadParticles(const InitialParticles& initial)
+{
+    const std::size_t n = initial.size();
+    particles_.resize(n);
+    bodyNames_ = initial.bodyNames;
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        for (int d = 0; d < D; ++d)
+        {
+            particles_.X[a][d] = initial.X[3 * a + static_cast<std::size_t>(d)];
+        }
+        particles_.x[a] = particles_.X[a];
+        particles_.V0[a] = initial.V[a];
+        particles_.body[a] = initial.body[a];
+        if (!(initial.V[a] > 0.0) || !particles_.X[a].allFinite())
+        {
+            throw InputError("particle " + std::to_string(a) + " in constant/particles.vtu has "
+                             "volume " + std::to_string(initial.V[a]) + " or a non-finite position",
+                             {"Volumes must be positive; run sphParticles again."});
+        }
+    }
+    // Each body is one contiguous range (sphParticles writes them so).
+    for (std::size_t b = 0; b < bodyNames_.size(); ++b)
+    {
+        const auto first = std::find(initial.body.begin(), initial.body.end(), static_cast<int>(b));
+        const auto last = std::find_if(first, initial.body.end(),
+                                       [&](int id) { return id != static_cast<int>(b); });
+        if (first == initial.body.end() ||
+            std::find(last, initial.body.end(), static_cast<int>(b)) != initial.body.end())
+        {
+            throw InputError("body '" + bodyNames_[b] + "' in constant/particles.vtu is empty or "
+                             "not contiguous",
+                             {"Run sphParticles again."});
+        }
+        particles_.bodies.push_back({bodyNames_[b],
+                                     static_cast<std::size_t>(first - initial.body.begin()),
+                                     static_cast<std::size_t>(last - initial.body.begin())});
+    }
+}
+
+template <int D>
+void Simulation<D>::setupBodies(const Dictionary& bodies)
+{
+    // Every body of the particle file needs a dictionary here, and vice versa.
+    for (const Entry& entry : bodies.entries())
+    {
+        if (entry.key() == "gravity")
+        {
+            continue;
+        }
+        if (std::find(bodyNames_.begin(), bodyNames_.end(), entry.key()) == bodyNames_.end())
+        {
+            std::vector<std::string> notes{"Bodies in constant/particles.vtu: " +
+                                           joinSorted(bodyNames_)};
+            const std::string hint = didYouMean(entry.key(), bodyNames_);
+            notes.push_back(hint.empty() ? "After editing system/particlesDict, run sphParticles "
+                                           "again."
+                                         : hint);
+            throw InputError(entry.keyLocation(),
+                             "constant/bodies names a body '" + entry.key() +
+                                 "' that the particles do not have",
+                             notes);
+        }
+    }
+    if (const Entry* gravity = bodies.find("gravity"))
+    {
+        Dictionary only("", bodies.location());
+        only.add(*gravity);
+        const Params p = validateNamed(
+            Schema().add(Key::vector("gravity", "body-force acceleration [m/s^2]")), only,
+            "constant/bodies", D);
+        gravity_ = toVec<D>(p.vector("gravity"));
+    }
+    for (std::size_t b = 0; b < bodyNames_.size(); ++b)
+    {
+        const Entry* entry = bodies.find(bodyNames_[b]);
+        if (!entry || !entry->isDict())
+        {
+            throw InputError(entry ? entry->keyLocation() : bodies.location(),
+                             "constant/bodies has no dictionary for body '" + bodyNames_[b] + "'",
+                             {"Every body of system/particlesDict needs one: " + bodyNames_[b] +
+                              " { material { type ...; } }"});
+        }
+        const Dictionary& dict = entry->dict();
+        const Params p = validateNamed(bodySchema(), dict, "a body", D, true);
+        materialModels_.push_back(selectModel<Material<D>>(p.dict("material"), {}, D));
+        materials_.push_back(materialModels_.back().get());
+        const BodyRange& range = particles_.bodies[b];
+        const Vec<D> velocity = toVec<D>(p.vector("velocity"));
+        for (std::size_t a = range.begin; a < range.end; ++a)
+        {
+            particles_.m[a] = materials_[b]->density() * particles_.V0[a];
+            particles_.v[a] = velocity;
+        }
+        const auto selected = [&](const Dictionary& owner, const Params& entryParams) {
+            const auto region = selectModel<Region<D>>(entryParams.dict("region"), {}, D);
+            const auto chosen = region->select(particles_.X, range.begin, range.end);
+            if (chosen.empty())
+            {
+                throw InputError(owner.location(),
+                                 "'" + owner.displayName() + "' selects no particle of body '" +
+                                     bodyNames_[b] + "'",
+                                 {"Regions test the initial positions; open "
+                                  "constant/particles.vtu in ParaView to check the region."});
+            }
+            return chosen;
+        };
+        if (p.has("initialVelocity"))
+        {
+            for (const Entry& item : p.dict("initialVelocity").entries())
+            {
+                if (!item.isDict())
+                {
+                    throw InputError(item.keyLocation(), "'" + item.key() +
+                                                             "' in initialVelocity must be a "
+                                                             "dictionary { region { ... }; "
+                                                             "velocity (...); }");
+                }
+                const Params q = validateNamed(initialVelocitySchema(), item.dict(),
+                                               "an initialVelocity entry", D, true);
+                const Vec<D> value = toVec<D>(q.vector("velocity"));
+                for (const std::size_t a : selected(item.dict(), q))
+                {
+                    particles_.v[a] = value;
+                }
+            }
+        }
+        if (p.has("constraints"))
+        {
+            for (const Entry& item : p.dict("constraints").entries())
+            {
+                if (!item.isDict())
+                {
+                    throw InputError(item.keyLocation(), "'" + item.key() +
+                                                             "' in constraints must be a "
+                                                             "dictionary { type fixed; region { "
+                                                             "... }; }");
+                }
+                const Params q =
+                    validateNamed(constraintSchema(), item.dict(), "a constraint", D, true);
+                for (const std::size_t a : selected(item.dict(), q))
+                {
+                    particles_.fixed[a] = 1;
+                    particles_.v[a].setZero();
+                }
+            }
+        }
+    }
+}
+
+template <int D>
+void Simulation<D>::checkCrossingOrder()
+{
+    if constexpr (D == 1)
+    {
+        for (const BodyRange& range : particles_.bodies)
+        {
+            std::vector<std::size_t> order(range.size());
+            std::iota(order.begin(), order.end(), range.begin);
+            std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+                return particles_.X[a][0] < particles_.X[b][0];
+            });
+            barOrder_.push_back(order);
+        }
+    }
+}
+
+template <int D>
+void Simulation<D>::setupFunctionObjects()
+{
+    if (!control_.functions)
+    {
+        return;
+    }
+    for (const Entry& entry : control_.functions->entries())
+    {
+        if (!entry.isDict())
+        {
+            throw InputError(entry.keyLocation(),
+                             "'" + entry.key() + "' in functions must be a dictionary { type ...; }",
+                             {"Valid function object types: " +
+                              joinSorted(Registry<FunctionObject<D>>::names())});
+        }
+        typename FunctionObject<D>::Args args;
+        args.name = entry.key();
+        args.caseDir = dicts_.caseDir();
+        args.initial = &particles_;
+        args.materials = &materials_;
+        args.bodyNames = &bodyNames_;
+        functionObjects_.push_back(selectModel<FunctionObject<D>>(entry.dict(), args, D));
+    }
+}
+
+template <int D>
+std::vector<std::string> Simulation<D>::describe() const
+{
+    std::vector<std::string> lines;
+    std::ostringstream out;
+    out << "Case        " << dicts_.caseDir().string() << " (" << caseName_ << "), " << D
+        << "D, " << particles_.size() << " particles, spacing " << spacing_ << " m";
+    lines.push_back(out.str());
+    lines.push_back("Kernel      " + kernel_->name() + "(hOverDx=" + std::to_string(kernel_->hOverDx()) +
+                    ", h=" + std::to_string(kernel_->h()) + " m)");
+    lines.push_back("Formulation " + formulation_->summary());
+    lines.push_back("Scheme      " + scheme_->summary());
+    lines.push_back("Contact     " + contact_->summary());
+    for (std::size_t b = 0; b < bodyNames_.size(); ++b)
+    {
+        std::size_t fixed = 0;
+        for (std::size_t a = particles_.bodies[b].begin; a < particles_.bodies[b].end; ++a)
+        {
+            fixed += particles_.fixed[a];
+        }
+        lines.push_back("Body        " + bodyNames_[b] + ": " +
+                        std::to_string(particles_.bodies[b].size()) + " particles (" +
+                        std::to_string(fixed) + " fixed), " + materials_[b]->summary());
+    }
+    std::ostringstream time;
+    time << "Time        endTime " << control_.endTime << " s, courant " << control_.courant
+         << ", writeInterval " << control_.writeInterval << " s, startFrom "
+         << (control_.startFromLatest ? "latestTime" : "startTime");
+    lines.push_back(time.str());
+    for (const auto& object : functionObjects_)
+    {
+        lines.push_back("Function    " + object->name() + ": " + object->summary());
+    }
+    return lines;
+}
+
+template <int D>
+std::string Simulation<D>::particleName(std::size_t a) const
+{
+    std::ostringstream out;
+    out << "particle " << a;
+    if (a < particles_.size())
+    {
+        out << " (body '" << bodyNames_[static_cast<std::size_t>(particles_.body[a])]
+            << "', initial position (" << particles_.X[a].transpose() << "))";
+    }
+    return out.str();
+}
+
+template class Simulation<1>;
+template class Simulation<2>;
+template class Simulation<3>;
+
+} // namespace sph
