@@ -10,15 +10,38 @@ namespace sph
 {
 
 template <int D>
-double Simulation<D>::stableTimeStep() const
+std::pair<double, std::size_t> Simulation<D>::stableTimeStep() const
 {
     double c = 0.0;
+    std::size_t body = 0;
     for (std::size_t b = 0; b < particles_.bodies.size(); ++b)
     {
         const BodyRange& range = particles_.bodies[b];
-        c = std::max(c, materials_[b]->maxWaveSpeed(&particles_.F[range.begin], range.size()));
+        const double bodyC = materials_[b]->maxWaveSpeed(&particles_.F[range.begin], range.size());
+        if (bodyC > c)
+        {
+            c = bodyC;
+            body = b;
+        }
     }
-    return control_.courant * kernel_->h() / c;
+    // Only when reporting a collapse does the fastest particle matter: find it then.
+    std::size_t fastest = particles_.bodies[body].begin;
+    const double dt = control_.courant * kernel_->h() / c;
+    if (!(dt > 1e-6 * firstDeltaT_) || !std::isfinite(dt))
+    {
+        const BodyRange& range = particles_.bodies[body];
+        double best = -1.0;
+        for (std::size_t a = range.begin; a < range.end; ++a)
+        {
+            const double ca = materials_[body]->waveSpeed(particles_.F[a]);
+            if (!(ca <= best))
+            {
+                best = ca;
+                fastest = a;
+            }
+        }
+    }
+    return {dt, fastest};
 }
 
 template <int D>
@@ -126,24 +149,32 @@ RunSummary Simulation<D>::run(RunLog& log)
         }
 
         // 4. Time step: α h / c from the current F, when due.
-        if (step_ == firstStep && !restarted)
+        const bool firstLevel = step_ == firstStep && !restarted;
+        if (firstLevel ||
+            (control_.timeStepUpdateInterval > 0 && step_ % control_.timeStepUpdateInterval == 0))
         {
-            deltaT_ = stableTimeStep();
+            const auto [stable, fastest] = stableTimeStep();
+            if (firstLevel && step_ == 0)
+            {
+                firstDeltaT_ = stable;
+            }
+            if (!(stable > 1e-6 * firstDeltaT_) || !std::isfinite(stable))
+            {
+                ForceStatus collapse;
+                collapse.badParticle = static_cast<long>(fastest);
+                collapse.badValue = stable;
+                collapse.badQuantity = "time step (collapsed to " + std::to_string(stable) +
+                                       " s from " + std::to_string(firstDeltaT_) +
+                                       " s; the largest wave speed is here)";
+                fail(collapse, "computing the time step");
+            }
+            deltaT_ = stable;
         }
-        else if (control_.timeStepUpdateInterval > 0 && step_ % control_.timeStepUpdateInterval == 0)
-        {
-            deltaT_ = stableTimeStep();
-        }
-        if (!(deltaT_ > 0.0) || !std::isfinite(deltaT_))
-        {
-            ForceStatus collapse;
-            collapse.badParticle = 0;
-            collapse.badQuantity = "time step " + std::to_string(deltaT_);
-            fail(collapse, "computing the time step");
-        }
+        // The run ends at the first level at or after endTime (no shortened last step: a run
+        // stopped early follows the same trajectory, so restarts continue bit-identically).
         const bool last = time_ >= endTime * (1.0 - 1e-12) ||
                           (control_.maxSteps && step_ - firstStep >= *control_.maxSteps);
-        const double dt = last ? 0.0 : std::min(deltaT_, endTime - time_);
+        const double dt = last ? 0.0 : deltaT_;
 
         // 5. Velocities: v^n (synchronised) and v^{n+1/2}.
         for (std::size_t a = 0; a < n; ++a)

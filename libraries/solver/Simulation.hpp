@@ -50,7 +50,8 @@ private:
     void checkCrossingOrder();
 
     // Simulation.cpp
-    double stableTimeStep() const;
+    // α h / max c over the particles, and the particle with the largest wave speed.
+    std::pair<double, std::size_t> stableTimeStep() const;
     void fail(const ForceStatus& status, const std::string& when);
     long crossingParticle() const;
     std::string particleName(std::size_t a) const;
@@ -89,6 +90,7 @@ private:
     double nextOutputTime_ = 0.0;
     double externalWork_ = 0.0;
     double contactWork_ = 0.0;
+    double firstDeltaT_ = 0.0; // Δt_0: a step below 1e-6 of it is a collapse
     double initialEnergy_ = 0.0;
     bool haveInitialEnergy_ = false;
     long lastGoodStep_ = -1;

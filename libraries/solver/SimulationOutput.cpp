@@ -181,6 +181,7 @@ void Simulation<D>::writeOutput(bool restartable, long step, double time,
     data.fieldData["restartable"] = scalar(restartable ? 1.0 : 0.0);
     data.fieldData["deltaT"] = scalar(deltaT_);
     data.fieldData["previousDeltaT"] = scalar(previousDeltaT_);
+    data.fieldData["firstDeltaT"] = scalar(firstDeltaT_);
     data.fieldData["halfStepVelocity"] = scalar(halfStepVelocity_ ? 1.0 : 0.0);
     data.fieldData["outputIndex"] = scalar(static_cast<double>(outputIndex_));
     data.fieldData["nextOutputTime"] = scalar(nextOutputTime_);
@@ -292,6 +293,7 @@ bool Simulation<D>::restoreLatest(RunLog& log)
         time_ = field("TimeValue");
         deltaT_ = field("deltaT");
         previousDeltaT_ = field("previousDeltaT");
+        firstDeltaT_ = field("firstDeltaT");
         halfStepVelocity_ = field("halfStepVelocity") != 0.0;
         outputIndex_ = static_cast<long>(field("outputIndex"));
         nextOutputTime_ = field("nextOutputTime");
