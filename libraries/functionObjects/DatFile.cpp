@@ -3,6 +3,7 @@
 #include "core/InputError.hpp"
 #include "io/AtomicFile.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -36,7 +37,8 @@ void DatFile::open(double startTime, bool restarted)
             }
             std::istringstream row(line);
             double time;
-            if (row >> time && time < startTime)
+            // The table holds 12 digits: compare with a tolerance far below one time step.
+            if (row >> time && time < startTime - 1e-9 * std::abs(startTime))
             {
                 kept += line + "\n";
             }

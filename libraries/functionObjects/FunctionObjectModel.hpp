@@ -55,17 +55,18 @@ protected:
     {
         file_ = std::make_unique<DatFile>(folder_ / (this->name() + ".dat"), std::move(columns));
     }
-    // Whether a row is due at this time level (the level nearest each multiple of the interval).
+    // Whether a row is due at this time level: the first level at or after each multiple of
+    // the interval (deltaT: the step size, for a round-off tolerance).
     bool rowDue(double time, double deltaT) const
     {
-        return interval_ <= 0.0 || time + 0.5 * deltaT >= nextRow_;
+        return interval_ <= 0.0 || time >= nextRow_ - 1e-6 * deltaT;
     }
     void writeRow(double time, double deltaT, const std::vector<double>& values)
     {
         file_->write(time, values);
         if (interval_ > 0.0)
         {
-            while (nextRow_ <= time + 0.5 * deltaT)
+            while (nextRow_ <= time + 1e-6 * deltaT)
             {
                 nextRow_ += interval_;
             }

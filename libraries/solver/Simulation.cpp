@@ -192,7 +192,9 @@ RunSummary Simulation<D>::run(RunLog& log)
         }
 
         // 6. Function objects and output at level n.
-        const bool outputDue = last || time_ + 0.5 * dt >= nextOutputTime_;
+        // Outputs at the first level at or after each multiple of writeInterval (the tolerance
+        // absorbs round-off in the accumulated time).
+        const bool outputDue = last || time_ >= nextOutputTime_ - 1e-6 * deltaT_;
         std::map<std::string, double> functionState;
         if (outputDue)
         {
@@ -236,7 +238,7 @@ RunSummary Simulation<D>::run(RunLog& log)
         if (outputDue)
         {
             writeOutput(true, step_, time_, functionState);
-            while (nextOutputTime_ <= time_ + 0.5 * dt)
+            while (nextOutputTime_ <= time_ + 1e-6 * deltaT_)
             {
                 nextOutputTime_ += control_.writeInterval;
             }

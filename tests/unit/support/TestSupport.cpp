@@ -64,7 +64,7 @@ std::filesystem::path buildDir()
     {
         return dir;
     }
-    return std::filesystem::current_path();
+    return SPH_BUILD_DIR;
 }
 
 void loadModelLibraries()

@@ -1,0 +1,114 @@
+// Output: read back with VTK's own reader (array names, sizes, TimeValue); atomic writes (a
+// killed run leaves a readable .pvd whose every file reads, and restarts from it).
+#include "io/PvdSeries.hpp"
+#include "io/VtuFile.hpp"
+#include "solver/SolverCases.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <sstream>
+#include <thread>
+
+extern char** environ;
+
+using namespace sph;
+
+TEST_CASE("output reads back with VTK's reader: arrays, sizes, TimeValue", "[output]")
+{
+    test::TempDir dir;
+    const auto caseDir = test::copyTutorial("bar1D/dykaBar", dir.path());
+    REQUIRE(test::runParticles(caseDir) == 0);
+    REQUIRE(test::runSolver(caseDir, {"-set", "endTime=1e-3", "-set", "writeInterval=2.5e-4"}) == 0);
+    PvdSeries series(caseDir / "VTK" / "dykaBar.pvd");
+    series.load();
+    REQUIRE(series.entries().size() == 5); // t = 0, 2.5e-4, 5e-4, 7.5e-4 and the end
+    double previous = -1.0;
+    for (const auto& entry : series.entries())
+    {
+        const VtuData data = readVtu(caseDir / "VTK" / entry.file);
+        REQUIRE(data.pointCount() == 40);
+        CHECK(data.fieldData.at("TimeValue").values.at(0) == Approx(entry.time).epsilon(1e-15));
+        CHECK(entry.time > previous);
+        previous = entry.time;
+        const std::map<std::string, int> expected{{"displacement", 3}, {"velocity", 3}, {"F", 9},
+                                                  {"P", 9},            {"J", 1},        {"bodyId", 1},
+                                                  {"fixed", 1}};
+        for (const auto& [name, components] : expected)
+        {
+            INFO(name);
+            REQUIRE(data.pointData.count(name));
+            CHECK(data.pointData.at(name).components == components);
+            CHECK(data.pointData.at(name).values.size() == 40u * components);
+        }
+        CHECK(data.pointData.at("F").componentNames.at(0) == "XX");
+        CHECK(data.pointData.at("fixed").values.at(0) == 1.0);
+        CHECK(data.stringFields.at("bodyNames") == std::vector<std::string>{"bar"});
+    }
+    CHECK(previous >= 1e-3);
+    // The free end moved and the fixed end did not.
+    const VtuData last = readVtu(caseDir / "VTK" / series.entries().back().file);
+    CHECK(last.pointData.at("displacement").values.at(0) == 0.0);
+    CHECK(std::abs(last.pointData.at("displacement").values.at(3 * 39)) > 1e-4);
+}
+
+TEST_CASE("a killed run leaves a readable series that restarts", "[output]")
+{
+    test::TempDir dir;
+    const auto caseDir = test::copyTutorial("bar1D/dykaBar", dir.path());
+    REQUIRE(test::runParticles(caseDir, {"-set", "bar.n=640"}) == 0);
+    const std::string binary = (test::buildDir() / "bin" / "sphSolid").string();
+    const std::string caseArg = caseDir.string();
+    std::vector<std::string> words{binary, "-case", caseArg, "-set", "writeInterval=2e-5",
+                                   "-set", "endTime=1"};
+    std::vector<char*> argv;
+    for (auto& word : words)
+    {
+        argv.push_back(word.data());
+    }
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    pid_t child = 0;
+    REQUIRE(posix_spawn(&child, binary.c_str(), &actions, nullptr, argv.data(), environ) == 0);
+    posix_spawn_file_actions_destroy(&actions);
+    // Let it write some outputs (the series is valid at every moment), then kill it without
+    // warning while it keeps writing.
+    PvdSeries series(caseDir / "VTK" / "dykaBar.pvd");
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (std::chrono::steady_clock::now() < deadline)
+    {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        REQUIRE_NOTHROW(series.load());
+        if (series.entries().size() >= 8)
+        {
+            break;
+        }
+    }
+    REQUIRE(kill(child, SIGKILL) == 0);
+    int status = 0;
+    waitpid(child, &status, 0);
+    REQUIRE(WIFSIGNALED(status));
+
+    REQUIRE_NOTHROW(series.load());
+    REQUIRE(series.entries().size() >= 8);
+    for (const auto& entry : series.entries())
+    {
+        const VtuData data = readVtu(caseDir / "VTK" / entry.file);
+        CHECK(data.pointCount() == 640);
+        CHECK(data.fieldData.at("TimeValue").values.at(0) == Approx(entry.time).epsilon(1e-15));
+    }
+    // No temporary file is mistaken for output, and the run picks up where it was killed.
+    const double killedAt = series.entries().back().time;
+    std::ostringstream endTime;
+    endTime.precision(17);
+    endTime << killedAt + 2e-5;
+    REQUIRE(test::runSolver(caseDir, {"-set", "controlDict.startFrom=latestTime", "-set",
+                                      "endTime=" + endTime.str()}) == 0);
+    series.load();
+    CHECK(series.entries().back().time >= killedAt + 2e-5);
+}

@@ -1,0 +1,35 @@
+#pragma once
+// Small cases written by the solver tests.
+
+#include "support/CaseRunner.hpp"
+
+#include <fstream>
+
+namespace sph::test
+{
+
+// A 2D block of 10x10 particles (spacing 1 mm) of Neo-Hookean rubber, bottom row fixed, top
+// half moving sideways: shear oscillation. `schemes` is the sphSchemes body after `dimension`.
+inline std::filesystem::path writeBlockCase(const std::filesystem::path& folder,
+                                            const std::string& schemes, double endTime,
+                                            double writeInterval)
+{
+    std::filesystem::create_directories(folder / "system");
+    std::filesystem::create_directories(folder / "constant");
+    std::ofstream(folder / "system" / "controlDict")
+        << "endTime " << endTime << ";\ncourant 0.3;\nwriteInterval " << writeInterval << ";\n"
+        << "functions\n{\n    energy { type energy; }\n"
+        << "    corner { type probes; points ((0.0095 0.0095)); fields (displacement velocity J); }\n}\n";
+    std::ofstream(folder / "system" / "sphSchemes") << "dimension 2;\n" << schemes << "\n";
+    std::ofstream(folder / "system" / "particlesDict")
+        << "block { type box; min (0 0); max (0.01 0.01); spacing 1e-3; }\n";
+    std::ofstream(folder / "constant" / "bodies")
+        << "block\n{\n    material { type neoHookean; mu 1e5; kappa 1e6; rho 1000; }\n"
+        << "    initialVelocity { top { region { type box; min (0 0.005); max (0.01 0.01); } "
+           "velocity (2 0.5); } }\n"
+        << "    constraints { base { type fixed; region { type box; min (0 0); max (0.01 "
+           "0.001); } } }\n}\n";
+    return folder;
+}
+
+} // namespace sph::test

@@ -1,0 +1,160 @@
+#include "support/CaseRunner.hpp"
+
+#include "solver/Applications.hpp"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+extern char** environ;
+
+namespace sph::test
+{
+
+std::filesystem::path sourceDir()
+{
+    return SPH_SOURCE_DIR;
+}
+
+std::filesystem::path copyTutorial(const std::string& relative, const std::filesystem::path& into)
+{
+    const std::filesystem::path source = sourceDir() / "tutorials" / relative;
+    const std::filesystem::path target = into / source.filename();
+    std::filesystem::create_directories(target);
+    for (const char* folder : {"system", "constant"})
+    {
+        std::filesystem::copy(source / folder, target / folder,
+                              std::filesystem::copy_options::recursive);
+    }
+    std::error_code ec;
+    std::filesystem::remove(target / "constant" / "particles.vtu", ec);
+    return target;
+}
+
+namespace
+{
+
+int runMain(int (*main)(int, const char* const*), const std::string& name,
+            const std::filesystem::path& caseDir, const std::vector<std::string>& args)
+{
+    std::vector<std::string> words{name, "-case", caseDir.string()};
+    words.insert(words.end(), args.begin(), args.end());
+    std::vector<const char*> argv;
+    for (const auto& word : words)
+    {
+        argv.push_back(word.c_str());
+    }
+    return main(static_cast<int>(argv.size()), argv.data());
+}
+
+} // namespace
+
+int runParticles(const std::filesystem::path& caseDir, const std::vector<std::string>& args)
+{
+    return runMain(&sphParticlesMain, "sphParticles", caseDir, args);
+}
+
+int runSolver(const std::filesystem::path& caseDir, const std::vector<std::string>& args)
+{
+    return runMain(&sphSolidMain, "sphSolid", caseDir, args);
+}
+
+int runProcess(const std::string& app, const std::vector<std::string>& args, std::string* output)
+{
+    const std::filesystem::path binary = buildDir() / "bin" / app;
+    const std::filesystem::path log =
+        std::filesystem::temp_directory_path() / ("sphTestOutput_" + std::to_string(::getpid()));
+    std::string command = "'" + binary.string() + "'";
+    for (const auto& arg : args)
+    {
+        command += " '" + arg + "'";
+    }
+    command += " > '" + log.string() + "' 2>&1";
+    const int status = std::system(command.c_str());
+    if (output)
+    {
+        std::ifstream in(log);
+        std::ostringstream text;
+        text << in.rdbuf();
+        *output = text.str();
+    }
+    std::filesystem::remove(log);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+std::vector<double> Table::column(const std::string& name) const
+{
+    std::size_t index = 0;
+    if (name != "time")
+    {
+        const auto it = std::find(columns.begin(), columns.end(), name);
+        REQUIRE(it != columns.end());
+        index = static_cast<std::size_t>(it - columns.begin()) + 1;
+    }
+    std::vector<double> values;
+    for (const auto& row : rows)
+    {
+        values.push_back(row.at(index));
+    }
+    return values;
+}
+
+Table readTable(const std::filesystem::path& file)
+{
+    std::ifstream in(file);
+    REQUIRE(in);
+    Table table;
+    std::string line;
+    while (std::getline(in, line))
+    {
+        if (line.empty())
+        {
+            continue;
+        }
+        std::istringstream words(line);
+        if (line[0] == '#')
+        {
+            std::string word;
+            words >> word; // '#'
+            words >> word; // time
+            while (words >> word)
+            {
+                table.columns.push_back(word);
+            }
+            continue;
+        }
+        std::vector<double> row;
+        double value;
+        while (words >> value)
+        {
+            row.push_back(value);
+        }
+        table.rows.push_back(row);
+    }
+    return table;
+}
+
+void setEntry(const std::filesystem::path& file, const std::string& key, const std::string& value)
+{
+    std::ifstream in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::string content = text.str();
+    const std::regex entry("(^|\\n)(\\s*)" + key + "\\s+[^;]*;");
+    if (std::regex_search(content, entry))
+    {
+        content = std::regex_replace(content, entry, "$1$2" + key + " " + value + ";",
+                                     std::regex_constants::format_first_only);
+    }
+    else
+    {
+        content += "\n" + key + " " + value + ";\n";
+    }
+    std::ofstream(file) << content;
+}
+
+} // namespace sph::test

@@ -1,0 +1,40 @@
+#pragma once
+// Running the real applications on case folders from tests: in-process (sphSolidMain) or as a
+// separate process (for exit codes and signals), plus readers for their outputs.
+
+#include "support/TestSupport.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace sph::test
+{
+
+// The repository's source folder (tutorials live there).
+std::filesystem::path sourceDir();
+
+// Copies tutorials/<relative> into `into`/<name of the tutorial> and returns that folder.
+std::filesystem::path copyTutorial(const std::string& relative, const std::filesystem::path& into);
+
+// Runs sphParticles / sphSolid in this process on `caseDir` with extra arguments.
+int runParticles(const std::filesystem::path& caseDir, const std::vector<std::string>& args = {});
+int runSolver(const std::filesystem::path& caseDir, const std::vector<std::string>& args = {});
+
+// Runs build/bin/<app> as a child process; returns its exit code, output in *output.
+int runProcess(const std::string& app, const std::vector<std::string>& args,
+               std::string* output = nullptr);
+
+// A gnuplot table written by a function object.
+struct Table
+{
+    std::vector<std::string> columns; // without "time"
+    std::vector<std::vector<double>> rows;
+    std::vector<double> column(const std::string& name) const; // "time" or a column name
+};
+Table readTable(const std::filesystem::path& file);
+
+// Replaces or adds `key value;` at the top level of a dictionary file (simple text edit).
+void setEntry(const std::filesystem::path& file, const std::string& key, const std::string& value);
+
+} // namespace sph::test
