@@ -84,25 +84,58 @@ std::string CommandLine::usage() const
 
 bool CommandLine::parse(int argc, const char* const* argv)
 {
-    invocation_.clear();
-    std::vector<int> columns; // 1-based column of each argument in the invocation line
-    for (int i = 0; i < argc; ++i)
+    // The invocation as the user would type it: the program's name, not the path it was
+    // started by, so columns in messages do not depend on where the build lives.
+    invocation_ = program_;
+    std::vector<int> columns{1}; // 1-based column of each argument in the invocation line
+    for (int i = 1; i < argc; ++i)
     {
-        if (i > 0)
-        {
-            invocation_ += ' ';
-        }
+        invocation_ += ' ';
         columns.push_back(static_cast<int>(invocation_.size()) + 1);
         invocation_ += argv[i];
     }
     auto source = std::make_shared<const SourceText>("command line", invocation_);
-    const auto locate = [&](const std::string& text) {
+    const auto at = [&](int i) {
+        return SourceLocation{source, 1, columns[static_cast<std::size_t>(i)],
+                              static_cast<int>(std::string(argv[i]).size())};
+    };
+    // The argument equal to `text` (or `text=value`), from argument `from` on.
+    const auto locate = [&](const std::string& text, int from = 1) {
+        for (int i = from; i < argc; ++i)
+        {
+            const std::string arg = argv[i];
+            if (arg == text || arg.rfind(text + "=", 0) == 0)
+            {
+                return at(i);
+            }
+        }
+        return SourceLocation{source, 1, 1, 1};
+    };
+    // An option as typed: -name or --name.
+    const auto locateOption = [&](std::string name) {
+        while (!name.empty() && name.front() == '-')
+        {
+            name.erase(0, 1);
+        }
+        const SourceLocation single = locate("-" + name);
+        return single.column > 1 ? single : locate("--" + name);
+    };
+    // The value of an option: the argument after -name, or the whole -name=value.
+    const auto locateValue = [&](std::string name) {
+        while (!name.empty() && name.front() == '-')
+        {
+            name.erase(0, 1);
+        }
         for (int i = 1; i < argc; ++i)
         {
-            if (std::string(argv[i]).find(text) != std::string::npos)
+            const std::string arg = argv[i];
+            if ((arg == "-" + name || arg == "--" + name) && i + 1 < argc)
             {
-                return SourceLocation{source, 1, columns[static_cast<std::size_t>(i)],
-                                      static_cast<int>(std::string(argv[i]).size())};
+                return at(i + 1);
+            }
+            if (arg.rfind("-" + name + "=", 0) == 0 || arg.rfind("--" + name + "=", 0) == 0)
+            {
+                return at(i);
             }
         }
         return SourceLocation{source, 1, 1, 1};
@@ -142,12 +175,28 @@ bool CommandLine::parse(int argc, const char* const* argv)
             name.erase(0, 1);
         }
         std::vector<std::string> notes{"Run '" + program_ + " -help' for the options."};
-        const std::string hint = didYouMean(name, names);
-        if (!hint.empty())
+        if (const auto match = closestMatch(name, names))
         {
-            notes.insert(notes.begin(), hint);
+            notes.insert(notes.begin(), "Did you mean '-" + *match + "'?");
         }
-        throw InputError(locate(error.get_option_name()), "unknown option '-" + name + "'", notes);
+        throw InputError(locateOption(error.get_option_name()), "unknown option '-" + name + "'",
+                         notes);
+    }
+    catch (const po::error_with_option_name& error)
+    {
+        // e.g. "-threads two": point at the value given to the option.
+        std::string name = error.get_option_name();
+        const SourceLocation where = locateValue(name);
+        while (!name.empty() && name.front() == '-')
+        {
+            name.erase(0, 1);
+        }
+        std::string message = error.what();
+        for (std::string::size_type pos; (pos = message.find("--" + name)) != std::string::npos;)
+        {
+            message.replace(pos, name.size() + 2, "-" + name);
+        }
+        throw InputError(where, message, {"Run '" + program_ + " -help' for the options."});
     }
     catch (const po::error& error)
     {
@@ -177,15 +226,33 @@ bool CommandLine::parse(int argc, const char* const* argv)
     dryRun_ = values_.count("dryRun") > 0;
     if (values_.count("positional"))
     {
+        // Positional words in the order typed: find the argument that is each one.
         const auto& words = values_["positional"].as<std::vector<std::string>>();
+        std::vector<SourceLocation> places;
+        int from = 1;
+        for (const auto& word : words)
+        {
+            for (int i = from; i < argc; ++i)
+            {
+                if (argv[i] == word)
+                {
+                    places.push_back(at(i));
+                    from = i + 1;
+                    break;
+                }
+            }
+        }
         if (listTypes_ && words.size() == 1)
         {
             listFamily_ = words.front();
+            listFamilyLocation_ = places.empty() ? SourceLocation{} : places.front();
         }
         else
         {
-            const std::string& first = listTypes_ ? words[1] : words[0];
-            throw InputError(locate(first), "unexpected argument '" + first + "'",
+            const std::size_t index = listTypes_ ? 1 : 0;
+            const std::string& first = words[index];
+            throw InputError(index < places.size() ? places[index] : SourceLocation{source, 1, 1, 1},
+                             "unexpected argument '" + first + "'",
                              {"Options start with '-' (e.g. -case DIR); -listTypes takes at most "
                               "one family name.",
                               "Run '" + program_ + " -help' for the options."});
@@ -193,7 +260,7 @@ bool CommandLine::parse(int argc, const char* const* argv)
     }
     if (!std::filesystem::is_directory(caseDir_) && !listTypes_)
     {
-        throw InputError(locate(caseDir_.string()),
+        throw InputError(locateValue("case"),
                          "the case folder '" + caseDir_.string() + "' does not exist",
                          {"Give an existing folder with -case DIR (a case holds system/ and "
                           "constant/)."});

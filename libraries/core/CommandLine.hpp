@@ -8,6 +8,8 @@
 //   -help, -version
 // Applications add their own options with options().
 
+#include "SourceLocation.hpp"
+
 #include <boost/program_options.hpp>
 
 #include <filesystem>
@@ -36,6 +38,8 @@ public:
     const std::vector<std::string>& sets() const { return sets_; }
     bool listTypes() const { return listTypes_; }
     const std::string& listFamily() const { return listFamily_; }
+    // Where the family name of -listTypes was typed (for error messages).
+    const SourceLocation& listFamilyLocation() const { return listFamilyLocation_; }
     bool dryRun() const { return dryRun_; }
     const boost::program_options::variables_map& values() const { return values_; }
     // argv joined with spaces (for logs).
@@ -55,6 +59,7 @@ private:
     std::vector<std::string> sets_;
     bool listTypes_ = false;
     std::string listFamily_;
+    SourceLocation listFamilyLocation_;
     bool dryRun_ = false;
     std::string invocation_;
 };

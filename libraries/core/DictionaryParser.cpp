@@ -70,8 +70,9 @@ class Lexer
 {
 public:
     Lexer(std::shared_ptr<const SourceText> source, std::string text, int line = 1,
-          int column = 1)
-        : source_(std::move(source)), text_(std::move(text)), line_(line), column_(column)
+          int column = 1, std::string endName = "")
+        : source_(std::move(source)), text_(std::move(text)), line_(line), column_(column),
+          endName_(std::move(endName))
     {
     }
 
@@ -166,6 +167,7 @@ private:
         if (atEnd())
         {
             token.kind = Token::Kind::End;
+            token.text = endName_; // how messages name the end ("" = the end of the file)
             token.endLine = line_;
             token.endColumn = column_;
             return token;
@@ -270,6 +272,7 @@ private:
     int column_ = 1;
     bool peeked_ = false;
     Token next_;
+    std::string endName_;
 };
 
 std::string describe(const Token& token)
@@ -277,7 +280,7 @@ std::string describe(const Token& token)
     switch (token.kind)
     {
     case Token::Kind::End:
-        return "the end of the file";
+        return token.text.empty() ? "the end of the file" : token.text;
     case Token::Kind::String:
         return "string \"" + token.text + "\"";
     case Token::Kind::Variable:
@@ -303,8 +306,10 @@ std::string readFile(const std::filesystem::path& path)
 class Parser
 {
 public:
-    Parser(std::filesystem::path path, std::vector<std::filesystem::path> includeStack)
-        : path_(std::move(path)), includeStack_(std::move(includeStack))
+    Parser(std::filesystem::path path, std::vector<std::filesystem::path> includeStack,
+           std::vector<std::string> includeNames = {})
+        : path_(std::move(path)), includeStack_(std::move(includeStack)),
+          includeNames_(std::move(includeNames))
     {
     }
 
@@ -577,13 +582,16 @@ private:
             if (open == canonical)
             {
                 std::string chain;
-                for (const auto& step : includeStack_)
+                for (const auto& step : includeNames_)
                 {
-                    chain += step.filename().string() + " -> ";
+                    chain += step + " -> ";
                 }
+                const std::string target = (std::filesystem::path(file.where.fileName()).parent_path() / file.text)
+                                               .lexically_normal()
+                                               .string();
                 throw InputError(file.where, "#include cycle: '" + file.text +
                                                  "' is already being read",
-                                 {"Include chain: " + chain + canonical.filename().string()});
+                                 {"Include chain: " + chain + target});
             }
         }
         if (!std::filesystem::is_regular_file(target))
@@ -601,12 +609,15 @@ private:
         Lexer inner(source, text);
         auto stack = includeStack_;
         stack.push_back(canonical);
-        Parser parser(target, stack);
+        auto names = includeNames_;
+        names.push_back(displayName);
+        Parser parser(target, stack, names);
         parser.parseBody(inner, dict, nullptr);
     }
 
     std::filesystem::path path_;
     std::vector<std::filesystem::path> includeStack_;
+    std::vector<std::string> includeNames_; // display names of the same files
 };
 
 } // namespace
@@ -619,7 +630,7 @@ std::unique_ptr<Dictionary> DictionaryParser::parseFile(const std::filesystem::p
     Lexer lexer(source, text);
     auto dict = std::make_unique<Dictionary>("", SourceLocation{source, 0, 0, 1});
     std::error_code ec;
-    Parser parser(path, {std::filesystem::weakly_canonical(path, ec)});
+    Parser parser(path, {std::filesystem::weakly_canonical(path, ec)}, {displayName});
     parser.parseFile(lexer, *dict);
     return dict;
 }
@@ -638,7 +649,7 @@ std::unique_ptr<Dictionary> DictionaryParser::parseString(const std::string& tex
 std::vector<Item> DictionaryParser::parseValue(const std::shared_ptr<const SourceText>& source,
                                                const std::string& text, int firstColumn)
 {
-    Lexer lexer(source, text, 1, firstColumn);
+    Lexer lexer(source, text, 1, firstColumn, "the end of the value");
     Parser parser(std::filesystem::current_path(), {});
     std::vector<Item> items = parser.parseStandaloneValue(lexer, nullptr);
     if (items.empty())

@@ -1,5 +1,7 @@
 #include "InputError.hpp"
 
+#include <cstdio>
+
 namespace sph
 {
 
@@ -17,6 +19,27 @@ std::string build(const SourceLocation& where, const std::string& message,
 {
     return "--> " + InputError::programName() + " FATAL INPUT ERROR\n" +
            formatDiagnostic(where, message, notes);
+}
+
+// A binary file must not cut the message short (what() is a C string) or garble the terminal.
+std::string printable(const std::string& text)
+{
+    std::string result;
+    for (const char c : text)
+    {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte < 0x20 && c != '\n' && c != '\t')
+        {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+            result += escaped;
+        }
+        else
+        {
+            result += c;
+        }
+    }
+    return result;
 }
 
 } // namespace
@@ -47,9 +70,12 @@ std::string formatDiagnostic(const SourceLocation& where, const std::string& mes
     }
     for (const std::string& note : notes)
     {
-        text += note + '\n';
+        if (!note.empty()) // e.g. a "did you mean" that found nothing
+        {
+            text += note + '\n';
+        }
     }
-    return text;
+    return printable(text);
 }
 
 InputError::InputError(SourceLocation where, std::string message, std::vector<std::string> notes)

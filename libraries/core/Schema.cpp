@@ -554,6 +554,13 @@ Params Schema::validate(const Dictionary& dict, const ValidationContext& context
                 reader.read(entry->items(), entry->keyLocation(), false, value.real,
                             value.integer, value.boolean, value.text, value.reals, value.words,
                             value.vectors);
+                if (entry->items().size() == 1 && entry->items()[0].isList())
+                {
+                    for (const Item& element : entry->items()[0].items())
+                    {
+                        value.elements.push_back(element.location());
+                    }
+                }
             }
         }
         else if (key.defaultText())
@@ -705,10 +712,28 @@ SourceLocation Params::location(std::string_view key) const
     return source_->location();
 }
 
+SourceLocation Params::location(std::string_view key, std::size_t index) const
+{
+    for (const Value& value : values_)
+    {
+        if (value.key.name() == key)
+        {
+            return index < value.elements.size() ? value.elements[index] : value.where;
+        }
+    }
+    return source_->location();
+}
+
 void Params::fail(std::string_view key, const std::string& message,
                   std::vector<std::string> notes) const
 {
     throw InputError(location(key), message, std::move(notes));
+}
+
+void Params::fail(std::string_view key, std::size_t index, const std::string& message,
+                  std::vector<std::string> notes) const
+{
+    throw InputError(location(key, index), message, std::move(notes));
 }
 
 } // namespace sph

@@ -153,8 +153,13 @@ public:
     bool given(std::string_view key) const;
     // Where the value was written (the dictionary itself when defaulted).
     SourceLocation location(std::string_view key) const;
+    // Where element `index` of a list value was written (the whole value when not a list).
+    SourceLocation location(std::string_view key, std::size_t index) const;
     // An InputError pointing at the key's value: for checks the schema cannot express.
     [[noreturn]] void fail(std::string_view key, const std::string& message,
+                           std::vector<std::string> notes = {}) const;
+    // The same, pointing at element `index` of a list value.
+    [[noreturn]] void fail(std::string_view key, std::size_t index, const std::string& message,
                            std::vector<std::string> notes = {}) const;
 
     const Dictionary& source() const { return *source_; }
@@ -169,6 +174,7 @@ private:
         bool present = false; // has a value
         bool given = false;   // written in the dictionary
         SourceLocation where;
+        std::vector<SourceLocation> elements; // of a list value
         double real = 0.0;
         long integer = 0;
         bool boolean = false;

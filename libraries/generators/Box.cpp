@@ -30,10 +30,15 @@ public:
         : min_(toVec<D>(p.vector("min"))), max_(toVec<D>(p.vector("max"))),
           spacing_(p.real("spacing"))
     {
+        if (!(max_.array() > min_.array()).all())
+        {
+            p.fail("max", "box: 'max' must be greater than 'min' in every component",
+                   {"min is the lower corner, max the upper one."});
+        }
         for (int d = 0; d < D; ++d)
         {
             const double cells = (max_[d] - min_[d]) / spacing_;
-            if (!(cells >= 0.999999) || std::abs(cells - std::round(cells)) > 1e-6 * cells)
+            if (std::abs(cells - std::round(cells)) > 1e-6 * cells)
             {
                 p.fail("spacing", "box: the extent " + std::to_string(max_[d] - min_[d]) +
                                       " m in direction " + std::to_string(d) +

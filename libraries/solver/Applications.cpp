@@ -19,7 +19,7 @@
 namespace sph
 {
 
-void listTypes(std::ostream& out, const std::string& family)
+void listTypes(std::ostream& out, const std::string& family, const SourceLocation& where)
 {
     RegistryStore& store = RegistryStore::instance();
     const std::vector<std::string> families = store.families();
@@ -31,7 +31,7 @@ void listTypes(std::ostream& out, const std::string& family)
         {
             notes.push_back(hint);
         }
-        throw InputError("-listTypes: unknown family '" + family + "'", notes);
+        throw InputError(where, "-listTypes: unknown family '" + family + "'", notes);
     }
     for (const std::string& name : families)
     {
@@ -85,6 +85,12 @@ int runDimension(const CaseDictionaries& dicts, const ControlSettings& control,
         // Without particles yet, a dry run still checks system/particlesDict by building them.
         initial = generateParticles(dicts.get("particlesDict"), D, dicts.caseDir());
     }
+    else if (!dicts.has("particlesDict"))
+    {
+        throw InputError("the case has neither constant/particles.vtu nor system/particlesDict",
+                         {"Write system/particlesDict (the bodies' geometry) and run sphParticles; "
+                          "see tutorials/ for examples."});
+    }
     else
     {
         initial = readParticleFile(particleFile); // reports the missing file
@@ -135,7 +141,7 @@ int sphSolidMain(int argc, const char* const* argv)
             dicts.read({"controlDict"});
             ControlSettings::read(dicts);
         }
-        listTypes(std::cout, commandLine.listFamily());
+        listTypes(std::cout, commandLine.listFamily(), commandLine.listFamilyLocation());
         return 0;
     }
 
@@ -170,7 +176,8 @@ int sphParticlesMain(int argc, const char* const* argv)
     LibraryLoader::loadDefaultLibraries();
     if (commandLine.listTypes())
     {
-        listTypes(std::cout, commandLine.listFamily().empty() ? "generator" : commandLine.listFamily());
+        listTypes(std::cout, commandLine.listFamily().empty() ? "generator" : commandLine.listFamily(),
+                  commandLine.listFamilyLocation());
         return 0;
     }
     CaseDictionaries dicts(commandLine.caseDir());

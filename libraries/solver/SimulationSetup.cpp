@@ -201,8 +201,9 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
         if (!entry || !entry->isDict())
         {
             throw InputError(entry ? entry->keyLocation() : bodies.location(),
-                             "constant/bodies has no dictionary for body '" + bodyNames_[b] + "'",
-                             {"Every body of system/particlesDict needs one: " + bodyNames_[b] +
+                             "missing the body '" + bodyNames_[b] +
+                                 "' (it is in constant/particles.vtu, from system/particlesDict)",
+                             {"Every body needs its material here: " + bodyNames_[b] +
                               " { material { type ...; } }"});
         }
         const Dictionary& dict = entry->dict();

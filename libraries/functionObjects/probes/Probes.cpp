@@ -35,12 +35,12 @@ public:
     {
         static const std::vector<std::string> known{"position", "displacement", "velocity",
                                                     "F",        "P",            "J"};
-        for (const auto& field : fields_)
+        for (std::size_t i = 0; i < fields_.size(); ++i)
         {
-            if (std::find(known.begin(), known.end(), field) == known.end())
+            if (std::find(known.begin(), known.end(), fields_[i]) == known.end())
             {
-                params.fail("fields", "probes: unknown field '" + field + "'",
-                            {"Valid fields: " + joinSorted(known), didYouMean(field, known)});
+                params.fail("fields", i, "probes: unknown field '" + fields_[i] + "'",
+                            {"Valid fields: " + joinSorted(known), didYouMean(fields_[i], known)});
             }
         }
         const ParticleSet<D>& particles = *args.initial;

@@ -99,7 +99,8 @@ TEST_CASE("every registered model documents itself and its keys", "[registry]")
             const ModelRecord* record = store.find(family, name);
             CHECK(record->description.size() > 20);
             CHECK_THAT(record->library, Catch::Contains("libsph"));
-            for (const Key& key : record->schema().keys())
+            const Schema schema = record->schema();
+            for (const Key& key : schema.keys())
             {
                 CHECK(!key.doc().empty());
             }
