@@ -77,6 +77,8 @@ public:
     virtual std::vector<std::string> report() const { return {}; }
     // "probes(points (0.1333), fields displacement velocity)" for the run header.
     virtual std::string summary() const = 0;
+    // Named results for the run's postProcessing/summary.json (e.g. error norms).
+    virtual std::map<std::string, double> results() const { return {}; }
     // Running quantities that a restart must continue (energy reference, error norms, ...).
     virtual void saveState(std::map<std::string, double>&) const {}
     virtual void restoreState(const std::map<std::string, double>&) {}

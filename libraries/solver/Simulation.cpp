@@ -111,6 +111,32 @@ RunSummary Simulation<D>::run(RunLog& log)
     }
     const long firstStep = step_;
     log.startTimer(time_, control_.endTime, n);
+    try
+    {
+        advance(log, restarted);
+    }
+    catch (const NumericalFailure& failure)
+    {
+        writeSummary(log.finish(step_ - firstStep, time_), failure.what());
+        throw;
+    }
+    for (const auto& object : functionObjects_)
+    {
+        for (const auto& line : object->report())
+        {
+            log.line(line);
+        }
+    }
+    const RunSummary summary = log.finish(step_ - firstStep, time_);
+    writeSummary(summary, "");
+    return summary;
+}
+
+template <int D>
+void Simulation<D>::advance(RunLog& log, bool restarted)
+{
+    const std::size_t n = particles_.size();
+    const long firstStep = step_;
     const double endTime = control_.endTime;
 
     while (true)
@@ -289,14 +315,6 @@ RunSummary Simulation<D>::run(RunLog& log)
         time_ += dt;
         ++step_;
     }
-    for (const auto& object : functionObjects_)
-    {
-        for (const auto& line : object->report())
-        {
-            log.line(line);
-        }
-    }
-    return log.finish(step_ - firstStep, time_);
 }
 
 template class Simulation<1>;

@@ -50,6 +50,7 @@ private:
     void checkCrossingOrder();
 
     // Simulation.cpp
+    void advance(RunLog& log, bool restarted); // the time loop
     // α h / max c over the particles, and the particle with the largest wave speed.
     std::pair<double, std::size_t> stableTimeStep() const;
     void fail(const ForceStatus& status, const std::string& when);
@@ -57,6 +58,8 @@ private:
     std::string particleName(std::size_t a) const;
 
     // SimulationOutput.cpp
+    // postProcessing/summary.json: models, status, cost and the function objects' results.
+    void writeSummary(const RunSummary& summary, const std::string& failure) const;
     void removeOldOutput();
     void writeOutput(bool restartable, long step, double time,
                      const std::map<std::string, double>& functionState);

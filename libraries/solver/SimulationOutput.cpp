@@ -4,7 +4,15 @@
 #include "solver/Simulation.hpp"
 
 #include "core/InputError.hpp"
+#include "io/AtomicFile.hpp"
 #include "io/VtuFile.hpp"
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <omp.h>
+
+#include <sstream>
 
 #include <regex>
 
@@ -104,6 +112,42 @@ void readMatrices(const VtuArray& array, std::vector<Mat<D>>& out)
 }
 
 } // namespace
+
+template <int D>
+void Simulation<D>::writeSummary(const RunSummary& summary, const std::string& failure) const
+{
+    boost::property_tree::ptree tree;
+    tree.put("case", caseName_);
+    tree.put("dimension", D);
+    tree.put("particles", particles_.size());
+    tree.put("spacing", spacing_);
+    tree.put("kernel", kernel_->name());
+    tree.put("hOverDx", kernel_->hOverDx());
+    tree.put("formulation", formulation_->summary());
+    tree.put("stabilisation", scheme_->summary());
+    tree.put("contact", contact_->summary());
+    tree.put("courant", control_.courant);
+    tree.put("status", failure.empty() ? "finished" : "failed");
+    tree.put("failure", failure);
+    tree.put("endTime", control_.endTime);
+    tree.put("time", time_);
+    tree.put("steps", summary.steps);
+    tree.put("threads", omp_get_max_threads());
+    tree.put("wallSeconds", summary.wallSeconds);
+    tree.put("particleStepsPerSecond", summary.particleStepsPerSecond);
+    tree.put("peakMemoryMB", summary.peakMemoryMB);
+    for (const auto& object : functionObjects_)
+    {
+        for (const auto& [key, value] : object->results())
+        {
+            tree.put(boost::property_tree::ptree::path_type("functions/" + object->name() + "/" + key, '/'),
+                     value);
+        }
+    }
+    std::ostringstream text;
+    boost::property_tree::write_json(text, tree);
+    writeTextAtomically(dicts_.caseDir() / "postProcessing" / "summary.json", text.str());
+}
 
 template <int D>
 void Simulation<D>::removeOldOutput()

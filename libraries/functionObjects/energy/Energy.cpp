@@ -66,6 +66,10 @@ public:
                 ", largest |drift| " + format(maxDrift_)};
     }
     std::string summary() const override { return "energy"; }
+    std::map<std::string, double> results() const override
+    {
+        return {{"finalDrift", drift_}, {"maxDrift", maxDrift_}};
+    }
     void saveState(std::map<std::string, double>& state) const override
     {
         FunctionObjectModel<D>::saveState(state);

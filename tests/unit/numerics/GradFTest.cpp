@@ -199,3 +199,81 @@ TEST_CASE("gradF: grad f is exact for a quadratic map on a regular lattice inter
     checkQuadratic<2>(9, 3.0, 5.0);
     checkQuadratic<3>(7, 3.0, 3.0);
 }
+
+TEST_CASE("gradF: K = dF^r/dx^r is carried exactly across a reference update", "[gradF]")
+{
+    // Spec §6.5. First map x1 = A1 X + ½ H1[X, X] (quadratic: the least squares is exact at the
+    // interior of a regular lattice), then move the reference to x1 with F^r = F1 and
+    // K = G f^{-1}; then an affine map x2 = A2 x1 + c. The composed deformation gradient is
+    // F = A2 F1 and its gradient with respect to x1 is G = A2 K1 with
+    // K1_mjk = H1_mjs (F1^{-1})_sk: exact wherever the first fit was.
+    constexpr int D = 2;
+    const auto points = test::lattice<D>(13, 0.0, 1);
+    test::SchemeFixture<D> fixture(points, "type gradF;", kMaterial, false, 1.4);
+    fixture.ref.K.assign(points.size(), Tensor3<D>::zero());
+    Mat<D> A1;
+    A1 << 1.1, 0.05, -0.08, 0.95;
+    Tensor3<D> H1 = Tensor3<D>::zero();
+    H1(0, 0, 0) = 0.02;
+    H1(0, 0, 1) = H1(0, 1, 0) = -0.01;
+    H1(1, 1, 1) = 0.015;
+    H1(1, 0, 1) = H1(1, 1, 0) = 0.012;
+    std::vector<Vec<D>> x1(points.size());
+    for (std::size_t a = 0; a < points.size(); ++a)
+    {
+        x1[a] = A1 * points[a] + 0.5 * H1.contract(points[a]) * points[a];
+    }
+    std::vector<Mat<D>> F;
+    std::vector<Tensor3<D>> K;
+    REQUIRE(fixture.scheme->referenceUpdate(x1, fixture.ref, F, &K).ok());
+    // Move the reference configuration as the updated-Lagrangian formulation does.
+    fixture.ref.x = x1;
+    for (std::size_t a = 0; a < points.size(); ++a)
+    {
+        fixture.ref.V[a] = fixture.V0[a] * F[a].determinant();
+    }
+    fixture.ref.F = F;
+    fixture.ref.K = K;
+    REQUIRE(fixture.ref.rebuild(*fixture.kernel, fixture.body, fixture.kernel->supportRadius()) < 0);
+    REQUIRE(fixture.scheme->prepare(fixture.ref) < 0);
+
+    Mat<D> A2;
+    A2 << 0.9, 0.1, 0.03, 1.05;
+    std::vector<Vec<D>> x2(points.size());
+    for (std::size_t a = 0; a < points.size(); ++a)
+    {
+        x2[a] = A2 * x1[a] + Vec<D>(0.3, -0.2);
+    }
+    const auto& scheme = dynamic_cast<const GradF<D>&>(*fixture.scheme);
+    double errorF = 0.0;
+    double errorK = 0.0;
+    double errorG = 0.0;
+    int interior = 0;
+    for (std::size_t a = 0; a < points.size(); ++a)
+    {
+        if (!((points[a].array() >= 3.0).all() && (points[a].array() <= 9.0).all()))
+        {
+            continue;
+        }
+        ++interior;
+        const Mat<D> F1 = A1 + H1.contract(points[a]);
+        const Mat<D> F1inv = F1.inverse();
+        const auto kin = scheme.kinematics(a, x2, fixture.ref);
+        errorF = std::max(errorF, (kin.F - A2 * F1).cwiseAbs().maxCoeff());
+        for (int k = 0; k < D; ++k)
+        {
+            Mat<D> K1 = Mat<D>::Zero();
+            for (int s = 0; s < D; ++s)
+            {
+                K1 += H1.slice[static_cast<std::size_t>(s)] * F1inv(s, k);
+            }
+            errorK = std::max(errorK, (K[a].slice[static_cast<std::size_t>(k)] - K1).cwiseAbs().maxCoeff());
+            errorG = std::max(errorG,
+                              (kin.G.slice[static_cast<std::size_t>(k)] - A2 * K1).cwiseAbs().maxCoeff());
+        }
+    }
+    REQUIRE(interior > 10);
+    CHECK(errorF < 1e-12);
+    CHECK(errorK < 1e-11);
+    CHECK(errorG < 1e-11);
+}

@@ -1,0 +1,137 @@
+// `stabilityMonitor`: numbers that show a scheme going unstable before it fails (issue 4).
+// Columns:
+//   zeroEnergyIndicator  max_a Σ_b Ŵ_ab |x_ba - f_a x^r_ba| / h: how far the neighbours are
+//                        from where the particle's own deformation gradient puts them (0 for
+//                        a linear field; zero-energy / hourglass patterns make it grow).
+//                        f_a = F_a (F^r_a)^{-1} maps the reference to the current configuration
+//                        (f = F in total-Lagrangian form); Ŵ_ab = W_ab V^r_b / Σ_e W_ae V^r_e.
+//   worstParticle        where that maximum is
+//   minJ maxJ            extremes of det F
+//   minDistanceRatio     the smallest distance between neighbours over the initial spacing
+//                        (particles clumping or crossing make it drop towards 0)
+// Keys: writeInterval (see FunctionObject.hpp).
+#include "functionObjects/FunctionObjectModel.hpp"
+
+#include <limits>
+
+namespace sph
+{
+
+template <int D>
+class StabilityMonitor : public FunctionObjectModel<D>
+{
+public:
+    static std::string description()
+    {
+        return "Zero-energy-mode indicator, extremes of det F and the smallest neighbour "
+               "distance over the initial spacing.";
+    }
+    static Schema schema() { return FunctionObjectModel<D>::commonSchema(); }
+
+    StabilityMonitor(const Params& params, const typename FunctionObject<D>::Args& args)
+        : FunctionObjectModel<D>(params, args), spacing_(initialSpacing(*args.initial))
+    {
+        this->setColumns({"zeroEnergyIndicator", "worstParticle", "minJ", "maxJ",
+                          "minDistanceRatio"});
+    }
+
+    void execute(const StepState<D>& state) override
+    {
+        if (!this->rowDue(state.time, state.deltaT))
+        {
+            return;
+        }
+        const ParticleSet<D>& p = state.particles;
+        const ReferenceConfiguration<D>& ref = state.reference;
+        const NeighbourList& list = ref.neighbours;
+        const double h = state.kernel.h();
+        double indicator = 0.0;
+        std::size_t worst = 0;
+        double minJ = std::numeric_limits<double>::max();
+        double maxJ = std::numeric_limits<double>::lowest();
+        double minDistance2 = std::numeric_limits<double>::max();
+        for (std::size_t a = 0; a < p.size(); ++a)
+        {
+            const double J = p.F[a].determinant();
+            minJ = std::min(minJ, J);
+            maxJ = std::max(maxJ, J);
+            const Mat<D> f = p.F[a] * ref.F[a].inverse();
+            double weightSum = 0.0;
+            double misfit = 0.0;
+            for (std::size_t k = list.begin(a); k < list.end(a); ++k)
+            {
+                const std::size_t b = list.indices[k];
+                const double w = ref.W[k] * ref.V[b];
+                weightSum += w;
+                const Vec<D> current = p.x[b] - p.x[a];
+                misfit += w * (current - f * (ref.x[b] - ref.x[a])).norm();
+                if (b != a)
+                {
+                    minDistance2 = std::min(minDistance2, current.squaredNorm());
+                }
+            }
+            const double value = misfit / (weightSum * h);
+            if (value > indicator)
+            {
+                indicator = value;
+                worst = a;
+            }
+        }
+        last_ = indicator;
+        maxIndicator_ = std::max(maxIndicator_, indicator);
+        minDistanceRatio_ = std::min(minDistanceRatio_, std::sqrt(minDistance2) / spacing_);
+        this->writeRow(state.time, state.deltaT,
+                       {indicator, static_cast<double>(worst), minJ, maxJ,
+                        std::sqrt(minDistance2) / spacing_});
+    }
+
+    std::vector<std::string> report() const override
+    {
+        char line[256];
+        std::snprintf(line, sizeof line,
+                      "%s: zero-energy indicator at the end %.3e, largest %.3e; smallest "
+                      "neighbour distance / initial spacing %.3f",
+                      this->name().c_str(), last_, maxIndicator_, minDistanceRatio_);
+        return {line};
+    }
+    std::map<std::string, double> results() const override
+    {
+        return {{"finalIndicator", last_},
+                {"maxIndicator", maxIndicator_},
+                {"minDistanceRatio", minDistanceRatio_}};
+    }
+    std::string summary() const override { return "stabilityMonitor"; }
+    void saveState(std::map<std::string, double>& state) const override
+    {
+        FunctionObjectModel<D>::saveState(state);
+        state["last"] = last_;
+        state["maxIndicator"] = maxIndicator_;
+        state["minDistanceRatio"] = minDistanceRatio_;
+    }
+    void restoreState(const std::map<std::string, double>& state) override
+    {
+        FunctionObjectModel<D>::restoreState(state);
+        last_ = state.at("last");
+        maxIndicator_ = state.at("maxIndicator");
+        minDistanceRatio_ = state.at("minDistanceRatio");
+    }
+
+private:
+    // The particle spacing: V0^(1/D) of the median particle.
+    static double initialSpacing(const ParticleSet<D>& p)
+    {
+        std::vector<double> volumes = p.V0;
+        std::nth_element(volumes.begin(), volumes.begin() + static_cast<long>(volumes.size() / 2),
+                         volumes.end());
+        return std::pow(volumes[volumes.size() / 2], 1.0 / D);
+    }
+
+    double spacing_;
+    double last_ = 0.0;
+    double maxIndicator_ = 0.0;
+    double minDistanceRatio_ = std::numeric_limits<double>::max();
+};
+
+SPH_REGISTER_DIM_MODEL(FunctionObject, StabilityMonitor, "stabilityMonitor");
+
+} // namespace sph
