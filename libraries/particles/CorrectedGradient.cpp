@@ -1,3 +1,4 @@
+#include "particles/Parallel.hpp"
 #include "particles/CorrectedGradient.hpp"
 
 #include <cmath>
@@ -13,7 +14,7 @@ long CorrectedGradient<D>::build(const NeighbourList& list, const std::vector<Ve
     L.resize(n);
     e.resize(n);
     long singular = -1;
-#pragma omp parallel for schedule(static) reduction(max : singular)
+#pragma omp parallel for schedule(static) reduction(max : singular) if (useThreads(n))
     for (std::size_t a = 0; a < n; ++a)
     {
         Mat<D> M = Mat<D>::Zero();

@@ -1,3 +1,4 @@
+#include "particles/Parallel.hpp"
 #include "particles/NeighbourList.hpp"
 
 #include <omp.h>
@@ -165,7 +166,7 @@ NeighbourList fillLists(std::size_t n, Candidates&& candidates)
     NeighbourList list;
     list.offsets.assign(n + 1, 0);
     std::vector<std::vector<std::uint32_t>> blocks;
-#pragma omp parallel
+#pragma omp parallel if (useThreads(n))
     {
 #pragma omp single
         blocks.resize(static_cast<std::size_t>(omp_get_num_threads()));
@@ -187,7 +188,7 @@ NeighbourList fillLists(std::size_t n, Candidates&& candidates)
     }
     list.indices.resize(list.offsets[n]);
     const std::size_t threads = blocks.size();
-#pragma omp parallel for schedule(static, 1)
+#pragma omp parallel for schedule(static, 1) if (threads > 1)
     for (std::size_t thread = 0; thread < threads; ++thread)
     {
         const std::size_t first = n * thread / threads;

@@ -1,3 +1,4 @@
+#include "particles/Parallel.hpp"
 #include "particles/ReferenceConfiguration.hpp"
 
 #include <cmath>
@@ -31,7 +32,7 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
     W.resize(pairs);
     gradW.resize(pairs);
     const std::size_t n = size();
-#pragma omp parallel
+#pragma omp parallel if (useThreads(n))
     {
         std::vector<double> r;
         std::vector<double> w;

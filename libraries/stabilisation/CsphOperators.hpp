@@ -12,6 +12,7 @@
 // For the standard kernel gradient incoming(k) = -outgoing(k) (the kernel gradient is odd);
 // the `vidal` scheme supplies shifted gradients instead.
 
+#include "particles/Parallel.hpp"
 #include "stabilisation/Stabilisation.hpp"
 
 #include <algorithm>
@@ -169,7 +170,7 @@ public:
         F.resize(n);
         long bad = -1;
         double badJ = 0.0;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (useThreads(n))
         for (std::size_t a = 0; a < n; ++a)
         {
             F[a] = incrementalGradient<D>(a, x, ref, gradients) * ref.F[a];
@@ -210,7 +211,7 @@ public:
             chunks_ = makeChunks(in.bodies);
         }
         std::vector<ChunkTally> tallies(chunks_.size());
-#pragma omp parallel
+#pragma omp parallel if (useThreads(n))
         {
             std::vector<double> psi;
 #pragma omp for schedule(static)

@@ -1,3 +1,4 @@
+#include "particles/Parallel.hpp"
 #include "stabilisation/gradF/GradF.hpp"
 
 #include <cmath>
@@ -84,7 +85,7 @@ long GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
     Y_.resize(n);
     maxNeighbours_ = list.maxCount();
     long singular = -1;
-#pragma omp parallel for schedule(static) reduction(max : singular)
+#pragma omp parallel for schedule(static) reduction(max : singular) if (useThreads(n))
     for (std::size_t a = 0; a < n; ++a)
     {
         double denominator = 0.0;
@@ -166,7 +167,7 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
     {
         newK->resize(n);
     }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (useThreads(n))
     for (std::size_t a = 0; a < n; ++a)
     {
         const Kinematics kin = kinematics(a, x, ref);
@@ -219,7 +220,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
     }
     const bool carriesK = !ref.K.empty();
     std::vector<ChunkTally> tallies(chunks_.size());
-#pragma omp parallel
+#pragma omp parallel if (useThreads(n))
     {
         std::vector<Mat<D>> Fb(maxNeighbours_);
         std::vector<Mat<D>> Pb(maxNeighbours_);

@@ -1,3 +1,4 @@
+#include "particles/Parallel.hpp"
 #include "stabilisation/hourglass/Hourglass.hpp"
 
 #include <sstream>
@@ -63,7 +64,7 @@ ForceStatus Hourglass<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>&
         return status;
     }
     const std::size_t n = in.ref.size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (useThreads(n))
     for (std::size_t a = 0; a < n; ++a)
     {
         out.T[a] += hourglassForce(a, in, f_);

@@ -1,3 +1,4 @@
+#include "particles/Parallel.hpp"
 #include "stabilisation/vidal/Vidal.hpp"
 
 #include <sstream>
@@ -54,7 +55,7 @@ long Vidal<D>::prepare(const ReferenceConfiguration<D>& ref)
     const Vec<D> shift = kernel_.h() * beta_;
     out_.resize(list.pairCount());
     in_.resize(list.pairCount());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (useThreads(n))
     for (std::size_t a = 0; a < n; ++a)
     {
         for (std::size_t k = list.begin(a); k < list.end(a); ++k)
