@@ -36,6 +36,7 @@ public:
     struct Args
     {
         const Kernel* kernel = nullptr;
+        std::vector<std::string> bodyNames; // in body-index order
     };
 
     virtual ~Contact() = default;

@@ -100,7 +100,7 @@ Entry::Entry(std::string key, SourceLocation keyLocation, std::unique_ptr<Dictio
 Entry::Entry(const Entry& other)
     : key_(other.key_), keyLocation_(other.keyLocation_), items_(other.items_),
       dict_(other.dict_ ? std::make_unique<Dictionary>(*other.dict_) : nullptr),
-      overridable_(other.overridable_)
+      overridable_(other.overridable_), referenced_(other.referenced_)
 {
 }
 

@@ -84,6 +84,11 @@ public:
     // Replace the value (used by `-set`); the entry becomes a stream entry.
     void setItems(std::vector<Item> items);
 
+    // Whether a `$name` elsewhere copied this entry: then it is a shared definition (e.g. a
+    // material used by two bodies) rather than an entry of its own.
+    bool referenced() const { return referenced_; }
+    void markReferenced() const { referenced_ = true; }
+
 private:
     friend class Dictionary;
     std::string key_;
@@ -91,6 +96,7 @@ private:
     std::vector<Item> items_;
     std::unique_ptr<Dictionary> dict_;
     bool overridable_ = false;
+    mutable bool referenced_ = false;
 };
 
 class Dictionary

@@ -517,6 +517,7 @@ private:
             }
             throw InputError(variable.where, "undefined variable '$" + variable.text + "'", notes);
         }
+        entry->markReferenced();
         return *entry;
     }
 

@@ -75,6 +75,10 @@ InitialParticles generate(const Dictionary& dict, const std::filesystem::path& c
     const Entry* firstBody = nullptr;
     for (const Entry& entry : dict.entries())
     {
+        if (entry.referenced() && !entry.isDict())
+        {
+            continue; // a definition used elsewhere with $name, e.g. spacing 1e-3;
+        }
         if (!entry.isDict())
         {
             throw InputError(entry.keyLocation(),

@@ -174,6 +174,19 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
                                                    : Vec<D>(force_[a] / particles_.m[a] + gravity_);
         }
 
+        // Contact work of the last kick, ΔW = Σ m Δv·(v^{n+1/2} + ½Δv + ½Δt a^{n+1}) (spec
+        // §12): the part with a^{n+1} now that it is known.
+        if (contactWorkPending_)
+        {
+            double work = 0.0;
+            for (std::size_t a = 0; a < n; ++a)
+            {
+                work += particles_.m[a] * contactDeltaV_[a].dot(acceleration_[a]);
+            }
+            contactWork_ += 0.5 * contactDeltaT_ * work;
+            contactWorkPending_ = false;
+        }
+
         // 4. Time step: α h / c from the current F, when due.
         const bool firstLevel = step_ == firstStep && !restarted;
         if (firstLevel ||
@@ -300,6 +313,14 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         {
             ContactState<D> contactState{particles_.x, particles_.v, particles_, dt};
             contact_->apply(contactState, contactDeltaV_);
+            double work = 0.0; // Σ m Δv·(v_before + ½Δv) with v_before = v_after - Δv
+            for (std::size_t a = 0; a < n; ++a)
+            {
+                work += particles_.m[a] * contactDeltaV_[a].dot(particles_.v[a] - 0.5 * contactDeltaV_[a]);
+            }
+            contactWork_ += work;
+            contactWorkPending_ = true;
+            contactDeltaT_ = dt;
         }
 
         // 9. Particles must not pass each other along a bar.

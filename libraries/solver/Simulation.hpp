@@ -93,6 +93,9 @@ private:
     double nextOutputTime_ = 0.0;
     double externalWork_ = 0.0;
     double contactWork_ = 0.0;
+    // The contact kick's work needs a^{n+1}: its last part is added at the next level.
+    bool contactWorkPending_ = false;
+    double contactDeltaT_ = 0.0;
     double firstDeltaT_ = 0.0; // Δt_0: a step below 1e-6 of it is a collapse
     double initialEnergy_ = 0.0;
     bool haveInitialEnergy_ = false;

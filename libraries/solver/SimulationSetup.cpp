@@ -78,14 +78,15 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
     kernel_ = selectModel<Kernel>(*schemes.kernel, Kernel::Args{D, spacing_}, D);
     formulation_ = selectModel<Formulation<D>>(*schemes.formulation, {}, D);
     scheme_ = selectModel<Stabilisation<D>>(*schemes.stabilisation, {kernel_.get()}, D);
+    const typename Contact<D>::Args contactArgs{kernel_.get(), bodyNames_};
     if (schemes.contact)
     {
-        contact_ = selectModel<Contact<D>>(*schemes.contact, {kernel_.get()}, D);
+        contact_ = selectModel<Contact<D>>(*schemes.contact, contactArgs, D);
     }
     else
     {
         const Dictionary none("contact", dicts.get("sphSchemes").location());
-        contact_ = createModel<Contact<D>>("none", none, {kernel_.get()}, D);
+        contact_ = createModel<Contact<D>>("none", none, contactArgs, D);
     }
 
     setupBodies(dicts.get("bodies"));
@@ -168,7 +169,8 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
     // Every body of the particle file needs a dictionary here, and vice versa.
     for (const Entry& entry : bodies.entries())
     {
-        if (entry.key() == "gravity")
+        // `gravity`, and definitions copied elsewhere with $name, are not bodies.
+        if (entry.key() == "gravity" || entry.referenced())
         {
             continue;
         }

@@ -5,9 +5,14 @@
 //   external = work done by external (body) forces since t = 0,
 //   contact  = work done by contact forces since t = 0,
 //   total    = kinetic + strain - external - contact  (conserved by an exact integrator),
-//   drift    = (total - total(0)) / |total(0)|.
+//   drift    = (total - total(0)) / |total(0)|,
+//   momentum_x .. (Σ m v) and, in 2D/3D, angularMomentum (Σ m x × v; _x _y _z in 3D):
+//   conserved by the internal forces and the contact kick, changed by fixed particles and
+//   external forces (spec §10).
 // Keys: writeInterval (see FunctionObject.hpp).
 #include "functionObjects/FunctionObjectModel.hpp"
+
+#include <Eigen/Geometry>
 
 #include <cmath>
 
@@ -28,7 +33,22 @@ public:
     Energy(const Params& params, const typename FunctionObject<D>::Args& args)
         : FunctionObjectModel<D>(params, args)
     {
-        this->setColumns({"kinetic", "strain", "external", "contact", "total", "drift"});
+        std::vector<std::string> columns{"kinetic", "strain", "external", "contact", "total",
+                                         "drift"};
+        static const char* axes[3] = {"x", "y", "z"};
+        for (int d = 0; d < D; ++d)
+        {
+            columns.push_back(std::string("momentum_") + axes[d]);
+        }
+        if (D == 2)
+        {
+            columns.push_back("angularMomentum");
+        }
+        for (int d = 0; D == 3 && d < 3; ++d)
+        {
+            columns.push_back(std::string("angularMomentum_") + axes[d]);
+        }
+        this->setColumns(columns);
     }
 
     bool needsStrainEnergy(long, double time) const override { return this->rowDue(time, lastDeltaT_); }
@@ -55,9 +75,29 @@ public:
         const double scale = std::abs(reference_) > 0.0 ? std::abs(reference_) : 1.0;
         drift_ = (total - reference_) / scale;
         maxDrift_ = std::max(maxDrift_, std::abs(drift_));
-        this->writeRow(state.time, state.deltaT,
-                       {kinetic, state.strainEnergy, state.externalWork, state.contactWork, total,
-                        drift_});
+        std::vector<double> row{kinetic, state.strainEnergy, state.externalWork,
+                                state.contactWork, total, drift_};
+        Vec<D> momentum = Vec<D>::Zero();
+        Eigen::Vector3d angular = Eigen::Vector3d::Zero();
+        for (std::size_t a = 0; a < p.size(); ++a)
+        {
+            const Vec<D> m = p.m[a] * state.velocity[a];
+            momentum += m;
+            angular += embed<D>(p.x[a]).cross(embed<D>(m));
+        }
+        for (int d = 0; d < D; ++d)
+        {
+            row.push_back(momentum[d]);
+        }
+        if (D == 2)
+        {
+            row.push_back(angular[2]);
+        }
+        for (int d = 0; D == 3 && d < 3; ++d)
+        {
+            row.push_back(angular[d]);
+        }
+        this->writeRow(state.time, state.deltaT, row);
     }
 
     std::vector<std::string> report() const override

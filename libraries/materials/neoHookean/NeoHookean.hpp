@@ -13,6 +13,7 @@
 //   M = ½ μ J^{-2/3} ((10/9) I1/λ^2 - 2/3) + κ J^2/λ^2   (= κ + 4μ/3 at F = I).
 
 #include "materials/Material.hpp"
+#include "particles/FastMath.hpp"
 
 namespace sph
 {
@@ -30,7 +31,7 @@ public:
         const double J = F.determinant();
         const Mat<D> FinvT = F.inverse().transpose();
         const double I1 = F.squaredNorm() + (3 - D);
-        const double c = 1.0 / std::cbrt(J);
+        const double c = inverseCubeRoot(J);
         const double Jm23 = c * c;
         return mu_ * Jm23 * (F - (I1 / 3.0) * FinvT) + kappa_ * J * (J - 1.0) * FinvT;
     }
@@ -38,7 +39,7 @@ public:
     {
         const double J = F.determinant();
         const double I1 = F.squaredNorm() + (3 - D);
-        const double c = 1.0 / std::cbrt(J);
+        const double c = inverseCubeRoot(J);
         return 0.5 * mu_ * (c * c * I1 - 3.0) + 0.5 * kappa_ * (J - 1.0) * (J - 1.0);
     }
     double waveSpeedOf(const Mat<D>& F) const
@@ -46,7 +47,7 @@ public:
         const double J = F.determinant();
         const double I1 = F.squaredNorm() + (3 - D);
         const double lowest = stretchSquaredRange<D>(F).first;
-        const double c = 1.0 / std::cbrt(J);
+        const double c = inverseCubeRoot(J);
         const double modulus = 0.5 * mu_ * c * c * ((10.0 / 9.0) * I1 / lowest - 2.0 / 3.0) +
                                kappa_ * J * J / lowest;
         return std::sqrt(std::max(modulus, 0.0) / this->density());

@@ -3,6 +3,7 @@
 // models, agreement with linearElastic at small strain, and the wave speed against the
 // principal longitudinal tangent ∂P_ii/∂F_ii.
 #include "numerics/NumericsSupport.hpp"
+#include "particles/FastMath.hpp"
 
 #include <map>
 
@@ -202,4 +203,15 @@ TEST_CASE("material errors: impossible values and missing keys", "[material][err
                       Catch::Contains("missing required key 'rho'"));
     CHECK_THROWS_WITH(test::build<Material<2>>("type stVenantKirchhoff; E 1; nu 0.5; rho 1;", {}, 2),
                       Catch::Contains("nu = 0.5 must lie in (-1, 0.5)"));
+}
+
+TEST_CASE("the inline inverse cube root is accurate to a few ulp", "[material]")
+{
+    double worst = 0.0;
+    for (double x = 1e-3; x < 1e3; x *= 1.0137)
+    {
+        const double exact = 1.0 / std::cbrt(x);
+        worst = std::max(worst, std::abs(inverseCubeRoot(x) - exact) / exact);
+    }
+    CHECK(worst < 2e-15);
 }

@@ -1,0 +1,167 @@
+// `extent`: per body, the largest and smallest displacement along one axis and the bounding
+// box over time (the seed's Fig. 9 plots the largest y-displacement of each ring).
+// Keys:
+//   component | the displacement component: x, y or z   | y (x in 1D)
+//   bodies    | which bodies ( ) = all                    | ()
+// Columns per body B: B_maxDisplacement B_minDisplacement, then B_min_x B_max_x (B_min_y ...)
+// of the current bounding box.
+#include "functionObjects/FunctionObjectModel.hpp"
+
+#include <limits>
+
+namespace sph
+{
+
+template <int D>
+class Extent : public FunctionObjectModel<D>
+{
+public:
+    static std::string description()
+    {
+        return "Per body: largest and smallest displacement along an axis, and the bounding box "
+               "(seed Fig. 9).";
+    }
+    static Schema schema()
+    {
+        return FunctionObjectModel<D>::commonSchema()
+            .add(Key::word("component", "displacement component").choices({"x", "y", "z"}).optional())
+            .add(Key::wordList("bodies", "which bodies; () = all").defaultValue("()"));
+    }
+
+    Extent(const Params& params, const typename FunctionObject<D>::Args& args)
+        : FunctionObjectModel<D>(params, args)
+    {
+        static const char* axes[3] = {"x", "y", "z"};
+        const std::string component = params.has("component") ? params.word("component")
+                                                               : (D == 1 ? "x" : "y");
+        component_ = component == "x" ? 0 : component == "y" ? 1 : 2;
+        if (component_ >= D)
+        {
+            params.fail("component", "extent: component '" + component + "' does not exist in " +
+                                         std::to_string(D) + "D");
+        }
+        const auto& names = *args.bodyNames;
+        const auto& chosen = params.wordList("bodies");
+        for (std::size_t i = 0; i < chosen.size(); ++i)
+        {
+            const auto it = std::find(names.begin(), names.end(), chosen[i]);
+            if (it == names.end())
+            {
+                params.fail("bodies", i, "extent: no body named '" + chosen[i] + "'",
+                            {"Bodies: " + joinSorted(names), didYouMean(chosen[i], names)});
+            }
+            bodies_.push_back(static_cast<std::size_t>(it - names.begin()));
+        }
+        if (bodies_.empty())
+        {
+            for (std::size_t b = 0; b < names.size(); ++b)
+            {
+                bodies_.push_back(b);
+            }
+        }
+        std::vector<std::string> columns;
+        for (const std::size_t b : bodies_)
+        {
+            const std::string& name = names[b];
+            columns.push_back(name + "_maxDisplacement");
+            columns.push_back(name + "_minDisplacement");
+            for (int d = 0; d < D; ++d)
+            {
+                columns.push_back(name + "_min_" + axes[d]);
+                columns.push_back(name + "_max_" + axes[d]);
+            }
+            names_.push_back(name);
+        }
+        peaks_.assign(bodies_.size(), {std::numeric_limits<double>::lowest(), 0.0});
+        this->setColumns(columns);
+    }
+
+    void execute(const StepState<D>& state) override
+    {
+        const ParticleSet<D>& p = state.particles;
+        std::vector<double> row;
+        for (std::size_t i = 0; i < bodies_.size(); ++i)
+        {
+            const BodyRange& range = p.bodies[bodies_[i]];
+            double largest = std::numeric_limits<double>::lowest();
+            double smallest = std::numeric_limits<double>::max();
+            Vec<D> low = Vec<D>::Constant(std::numeric_limits<double>::max());
+            Vec<D> high = Vec<D>::Constant(std::numeric_limits<double>::lowest());
+            for (std::size_t a = range.begin; a < range.end; ++a)
+            {
+                const double u = p.x[a][component_] - p.X[a][component_];
+                largest = std::max(largest, u);
+                smallest = std::min(smallest, u);
+                low = low.cwiseMin(p.x[a]);
+                high = high.cwiseMax(p.x[a]);
+            }
+            if (largest > peaks_[i].first)
+            {
+                peaks_[i] = {largest, state.time};
+            }
+            row.push_back(largest);
+            row.push_back(smallest);
+            for (int d = 0; d < D; ++d)
+            {
+                row.push_back(low[d]);
+                row.push_back(high[d]);
+            }
+        }
+        if (this->rowDue(state.time, state.deltaT))
+        {
+            this->writeRow(state.time, state.deltaT, row);
+        }
+    }
+
+    std::vector<std::string> report() const override
+    {
+        std::vector<std::string> lines;
+        for (std::size_t i = 0; i < names_.size(); ++i)
+        {
+            char line[256];
+            std::snprintf(line, sizeof line, "%s: %s largest displacement %.4e m at t = %.4e s",
+                          this->name().c_str(), names_[i].c_str(), peaks_[i].first,
+                          peaks_[i].second);
+            lines.push_back(line);
+        }
+        return lines;
+    }
+    std::map<std::string, double> results() const override
+    {
+        std::map<std::string, double> values;
+        for (std::size_t i = 0; i < names_.size(); ++i)
+        {
+            values[names_[i] + "_peakDisplacement"] = peaks_[i].first;
+            values[names_[i] + "_peakTime"] = peaks_[i].second;
+        }
+        return values;
+    }
+    std::string summary() const override { return "extent"; }
+    void saveState(std::map<std::string, double>& state) const override
+    {
+        FunctionObjectModel<D>::saveState(state);
+        for (std::size_t i = 0; i < peaks_.size(); ++i)
+        {
+            state["peak" + std::to_string(i)] = peaks_[i].first;
+            state["peakTime" + std::to_string(i)] = peaks_[i].second;
+        }
+    }
+    void restoreState(const std::map<std::string, double>& state) override
+    {
+        FunctionObjectModel<D>::restoreState(state);
+        for (std::size_t i = 0; i < peaks_.size(); ++i)
+        {
+            peaks_[i] = {state.at("peak" + std::to_string(i)), state.at("peakTime" + std::to_string(i))};
+        }
+    }
+
+private:
+    int component_ = 1;
+    std::vector<std::size_t> bodies_;
+    std::vector<std::string> names_;
+    std::vector<std::pair<double, double>> peaks_; // largest displacement and when
+};
+
+SPH_REGISTER_DIM_MODEL(FunctionObject, Extent, "extent");
+
+} // namespace sph
