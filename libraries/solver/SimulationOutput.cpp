@@ -14,13 +14,31 @@
 
 #include <sstream>
 
-#include <regex>
 
 namespace sph
 {
 
 namespace
 {
+
+// The output index of `fileName` if it is one of this case's outputs "<case>_<n>.vtu", else -1.
+long outputIndexOf(const std::string& fileName, const std::string& caseName)
+{
+    const std::string prefix = caseName + "_";
+    const std::string suffix = ".vtu";
+    if (fileName.size() <= prefix.size() + suffix.size() || fileName.rfind(prefix, 0) != 0 ||
+        fileName.compare(fileName.size() - suffix.size(), suffix.size(), suffix) != 0)
+    {
+        return -1;
+    }
+    const std::string digits =
+        fileName.substr(prefix.size(), fileName.size() - prefix.size() - suffix.size());
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos)
+    {
+        return -1;
+    }
+    return std::stol(digits);
+}
 
 template <int D>
 VtuArray vectors(const std::vector<Vec<D>>& values)
@@ -155,10 +173,9 @@ void Simulation<D>::removeOldOutput()
     const std::filesystem::path folder = dicts_.caseDir() / "VTK";
     if (std::filesystem::is_directory(folder))
     {
-        const std::regex ours(caseName_ + "_[0-9]+\\.vtu");
         for (const auto& file : std::filesystem::directory_iterator(folder))
         {
-            if (std::regex_match(file.path().filename().string(), ours))
+            if (outputIndexOf(file.path().filename().string(), caseName_) >= 0)
             {
                 std::filesystem::remove(file.path());
             }
@@ -364,12 +381,9 @@ bool Simulation<D>::restoreLatest(RunLog& log)
         // This level is computed and written again; later outputs are stale.
         pvd_.keepBefore(time_);
         pvd_.write();
-        const std::regex ours(caseName_ + "_([0-9]+)\\.vtu");
         for (const auto& other : std::filesystem::directory_iterator(folder))
         {
-            std::smatch match;
-            const std::string nameOnly = other.path().filename().string();
-            if (std::regex_match(nameOnly, match, ours) && std::stol(match[1]) > outputIndex_)
+            if (outputIndexOf(other.path().filename().string(), caseName_) > outputIndex_)
             {
                 std::filesystem::remove(other.path());
             }
