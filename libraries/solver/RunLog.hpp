@@ -19,6 +19,8 @@ struct RunSummary
     double particleStepsPerSecond = 0.0;
     double peakMemoryMB = 0.0;
     double finalTime = 0.0;
+    double outputSeconds = 0.0;               // writing VTK files
+    double computeParticleStepsPerSecond = 0.0; // excluding the output
 };
 
 class RunLog
@@ -34,6 +36,8 @@ public:
     void progress(long step, long stepsDone, double time, double deltaT, double drift,
                   bool haveDrift);
     RunSummary finish(long steps, double time);
+    // Time spent writing output, excluded from the compute rate.
+    void addOutputSeconds(double seconds) { outputSeconds_ += seconds; }
     double elapsedSeconds() const;
 
     // Resident-set peak of this process [MB].
@@ -48,6 +52,7 @@ private:
     double startTime_ = 0.0;
     double endTime_ = 0.0;
     std::size_t particles_ = 0;
+    double outputSeconds_ = 0.0;
 };
 
 } // namespace sph

@@ -3,6 +3,7 @@
 
 #include "core/Application.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -276,7 +277,10 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         }
         if (outputDue)
         {
+            const auto outputStart = std::chrono::steady_clock::now();
             writeOutput(true, step_, time_, functionState);
+            log.addOutputSeconds(
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - outputStart).count());
             while (nextOutputTime_ <= time_ + 1e-6 * deltaT_)
             {
                 nextOutputTime_ += control_.writeInterval;

@@ -153,6 +153,8 @@ void Simulation<D>::writeSummary(const RunSummary& summary, const std::string& f
     tree.put("threads", omp_get_max_threads());
     tree.put("wallSeconds", summary.wallSeconds);
     tree.put("particleStepsPerSecond", summary.particleStepsPerSecond);
+    tree.put("outputSeconds", summary.outputSeconds);
+    tree.put("computeParticleStepsPerSecond", summary.computeParticleStepsPerSecond);
     tree.put("peakMemoryMB", summary.peakMemoryMB);
     for (const auto& object : functionObjects_)
     {
