@@ -1,10 +1,13 @@
 // `stabilityMonitor`: numbers that show a scheme going unstable before it fails (issue 4).
 // Columns:
-//   zeroEnergyIndicator  max_a Σ_b Ŵ_ab |x_ba - f_a x^r_ba| / h: how far the neighbours are
+//   zeroEnergyIndicator  max_a Σ_b Ŵ_ab |x_ba - F_a X_ba| / h: how far the neighbours are
 //                        from where the particle's own deformation gradient puts them (0 for
-//                        a linear field; zero-energy / hourglass patterns make it grow).
-//                        f_a = F_a (F^r_a)^{-1} maps the reference to the current configuration
-//                        (f = F in total-Lagrangian form); Ŵ_ab = W_ab V^r_b / Σ_e W_ae V^r_e.
+//                        a linear field, O(|∇F| h) for a smooth one; zero-energy / hourglass
+//                        patterns make it grow). Ŵ_ab = W_ab V^r_b / Σ_e W_ae V^r_e over the
+//                        reference neighbours. The total map F (from the initial positions X)
+//                        is used, not the increment f from x^r: when the reference moves every
+//                        step x = x^r at evaluation, and a pattern frozen into F^r would be
+//                        invisible to f. In total-Lagrangian form X = x^r and the two agree.
 //   worstParticle        where that maximum is
 //   minJ maxJ            extremes of det F
 //   minDistanceRatio     the smallest distance between neighbours over the initial spacing
@@ -55,7 +58,6 @@ public:
             const double J = p.F[a].determinant();
             minJ = std::min(minJ, J);
             maxJ = std::max(maxJ, J);
-            const Mat<D> f = p.F[a] * ref.F[a].inverse();
             double weightSum = 0.0;
             double misfit = 0.0;
             for (std::size_t k = list.begin(a); k < list.end(a); ++k)
@@ -64,7 +66,7 @@ public:
                 const double w = ref.W[k] * ref.V[b];
                 weightSum += w;
                 const Vec<D> current = p.x[b] - p.x[a];
-                misfit += w * (current - f * (ref.x[b] - ref.x[a])).norm();
+                misfit += w * (current - p.F[a] * (p.X[b] - p.X[a])).norm();
                 if (b != a)
                 {
                     minDistance2 = std::min(minDistance2, current.squaredNorm());
