@@ -84,7 +84,8 @@ private:
     ForceStatus rebuild(const std::vector<int>& body)
     {
         ForceStatus status;
-        long bad = ref_.rebuild(kernel_, body, scheme_.searchRadius(kernel_));
+        long bad = ref_.rebuild(kernel_, body, scheme_.searchRadius(kernel_),
+                                formulation_.updatesReference());
         if (bad >= 0)
         {
             status.badParticle = bad;

@@ -8,6 +8,7 @@
 #include <vtkCellType.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
@@ -49,11 +50,26 @@ private:
     std::string messages_;
 };
 
+// VTK only reads the arrays while writing: they are wrapped, not copied (save = 1: VTK never
+// frees them).
+template <class Vtk, class T>
+vtkSmartPointer<Vtk> wrap(const std::vector<T>& values, int components)
+{
+    auto array = vtkSmartPointer<Vtk>::New();
+    array->SetNumberOfComponents(components);
+    array->SetArray(const_cast<T*>(values.data()), static_cast<vtkIdType>(values.size()), 1);
+    return array;
+}
+
 vtkSmartPointer<vtkDataArray> makeArray(const std::string& name, const VtuArray& array,
                                         std::size_t tuples)
 {
     vtkSmartPointer<vtkDataArray> result;
-    if (array.integer)
+    if (!array.singles.empty())
+    {
+        result = wrap<vtkFloatArray>(array.singles, array.components);
+    }
+    else if (array.integer)
     {
         auto values = vtkSmartPointer<vtkIntArray>::New();
         values->SetNumberOfComponents(array.components);
@@ -66,15 +82,9 @@ vtkSmartPointer<vtkDataArray> makeArray(const std::string& name, const VtuArray&
     }
     else
     {
-        auto values = vtkSmartPointer<vtkDoubleArray>::New();
-        values->SetNumberOfComponents(array.components);
-        values->SetNumberOfTuples(static_cast<vtkIdType>(tuples));
-        for (std::size_t i = 0; i < array.values.size(); ++i)
-        {
-            values->SetValue(static_cast<vtkIdType>(i), array.values[i]);
-        }
-        result = values;
+        result = wrap<vtkDoubleArray>(array.values, array.components);
     }
+    (void)tuples;
     result->SetName(name.c_str());
     for (std::size_t c = 0; c < array.componentNames.size(); ++c)
     {
@@ -116,13 +126,7 @@ void writeVtu(const std::filesystem::path& file, const VtuData& data)
     const std::size_t n = data.pointCount();
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(static_cast<vtkIdType>(n));
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        points->SetPoint(static_cast<vtkIdType>(i), data.points[3 * i], data.points[3 * i + 1],
-                         data.points[3 * i + 2]);
-    }
+    points->SetData(wrap<vtkDoubleArray>(data.points, 3));
     grid->SetPoints(points);
     // One vertex cell per point.
     auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
@@ -143,7 +147,8 @@ void writeVtu(const std::filesystem::path& file, const VtuData& data)
 
     for (const auto& [name, array] : data.pointData)
     {
-        if (array.values.size() != n * static_cast<std::size_t>(array.components))
+        const std::size_t size = array.singles.empty() ? array.values.size() : array.singles.size();
+        if (size != n * static_cast<std::size_t>(array.components))
         {
             throw std::logic_error("point array '" + name + "' has the wrong size");
         }

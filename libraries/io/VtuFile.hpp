@@ -1,8 +1,9 @@
 #pragma once
 // Point sets in VTK's XML unstructured-grid format (.vtu), written and read with the VTK
 // library: one VTK_VERTEX cell per point so ParaView shows the particles; appended binary data,
-// zlib-compressed; points and arrays in double precision so a file can restart a run exactly.
-// Written atomically (temp + rename).
+// zlib-compressed; points and restart arrays in double precision so a file can restart a run
+// exactly, display-only arrays may be single precision. Written atomically (temp + rename);
+// VTK reads the arrays in place (no copy), so writing costs little memory beyond the data.
 
 #include <filesystem>
 #include <map>
@@ -19,6 +20,7 @@ struct VtuArray
     bool integer = false;       // stored as Int32 (ids, flags) instead of Float64
     // Names of the components shown by ParaView ("XX", "XY", ...); empty for defaults.
     std::vector<std::string> componentNames;
+    std::vector<float> singles; // written as Float32 instead of `values` when not empty
 };
 
 struct VtuData

@@ -7,6 +7,9 @@
 // invertible, boundary particles included: ⟨∇φ⟩_a = Σ_b φ_b ⊗ g_a(b) is exact for linear φ.
 
 #include "particles/NeighbourList.hpp"
+#include "particles/Parallel.hpp"
+
+#include <cmath>
 
 #include <vector>
 
@@ -19,10 +22,49 @@ struct CorrectedGradient
     std::vector<Mat<D>> L; // per particle
     std::vector<Vec<D>> e; // per particle
 
-    // Computes L and e from per-pair gradients `d` (aligned with list.indices, self slot
-    // ignored). Returns the index of the first particle whose M_a is singular, or -1.
+    // Computes L and e from the per-pair gradients d(a, k) (k a slot of a's list; the self
+    // slot is ignored). Returns the index of the first particle whose M_a is singular, or -1.
+    template <class Gradient>
     long build(const NeighbourList& list, const std::vector<Vec<D>>& x,
-               const std::vector<double>& V, const std::vector<Vec<D>>& d);
+               const std::vector<double>& V, const Gradient& d);
 };
+
+template <int D>
+template <class Gradient>
+long CorrectedGradient<D>::build(const NeighbourList& list, const std::vector<Vec<D>>& x,
+                                 const std::vector<double>& V, const Gradient& d)
+{
+    const std::size_t n = list.particleCount();
+    L.resize(n);
+    e.resize(n);
+    long singular = -1;
+#pragma omp parallel for schedule(static) reduction(max : singular) if (useThreads(n))
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        Mat<D> M = Mat<D>::Zero();
+        Vec<D> sum = Vec<D>::Zero();
+        for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
+        {
+            const std::size_t b = list.indices[k];
+            const Vec<D> weighted = V[b] * d(a, k);
+            M.noalias() += (x[b] - x[a]) * weighted.transpose();
+            sum += weighted;
+        }
+        // M ≈ I on a regular cloud; a (near-)singular M means too few neighbours or all on a
+        // line/plane: the gradient cannot be corrected there.
+        const double det = M.determinant();
+        if (!(std::abs(det) > 1.0e-8) || !std::isfinite(det))
+        {
+            singular = std::max<long>(singular, static_cast<long>(n - a)); // max → smallest a
+            L[a].setIdentity();
+        }
+        else
+        {
+            L[a] = M.inverse().transpose();
+        }
+        e[a] = -sum;
+    }
+    return singular < 0 ? -1 : static_cast<long>(n) - singular;
+}
 
 } // namespace sph

@@ -220,6 +220,25 @@ NeighbourList buildNeighbourList(const std::vector<Vec<D>>& x, const std::vector
 }
 
 template <int D>
+NeighbourList filterNeighbourList(const NeighbourList& candidates, const std::vector<Vec<D>>& x,
+                                  double radius)
+{
+    const double radius2 = radius * radius;
+    return fillLists<D>(x.size(), [&](std::size_t a, std::vector<std::uint32_t>& found) {
+        const std::size_t first = candidates.begin(a);
+        found.push_back(candidates.indices[first]); // the particle itself
+        for (std::size_t k = first + 1; k < candidates.end(a); ++k)
+        {
+            const std::uint32_t b = candidates.indices[k];
+            if ((x[b] - x[a]).squaredNorm() < radius2)
+            {
+                found.push_back(b);
+            }
+        }
+    });
+}
+
+template <int D>
 NeighbourList buildCrossNeighbourList(const std::vector<Vec<D>>& query,
                                       const std::vector<Vec<D>>& source, double radius)
 {
@@ -240,6 +259,9 @@ NeighbourList buildCrossNeighbourList(const std::vector<Vec<D>>& query,
 template NeighbourList buildNeighbourList<1>(const std::vector<Vec<1>>&, const std::vector<int>&, double);
 template NeighbourList buildNeighbourList<2>(const std::vector<Vec<2>>&, const std::vector<int>&, double);
 template NeighbourList buildNeighbourList<3>(const std::vector<Vec<3>>&, const std::vector<int>&, double);
+template NeighbourList filterNeighbourList<1>(const NeighbourList&, const std::vector<Vec<1>>&, double);
+template NeighbourList filterNeighbourList<2>(const NeighbourList&, const std::vector<Vec<2>>&, double);
+template NeighbourList filterNeighbourList<3>(const NeighbourList&, const std::vector<Vec<3>>&, double);
 template NeighbourList buildCrossNeighbourList<1>(const std::vector<Vec<1>>&, const std::vector<Vec<1>>&, double);
 template NeighbourList buildCrossNeighbourList<2>(const std::vector<Vec<2>>&, const std::vector<Vec<2>>&, double);
 template NeighbourList buildCrossNeighbourList<3>(const std::vector<Vec<3>>&, const std::vector<Vec<3>>&, double);

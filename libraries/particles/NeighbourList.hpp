@@ -31,6 +31,13 @@ template <int D>
 NeighbourList buildNeighbourList(const std::vector<Vec<D>>& x, const std::vector<int>& body,
                                  double radius);
 
+// The pairs of `candidates` (a list built with a larger radius) that are within `radius`
+// at positions x: identical to buildNeighbourList(x, body, radius) while every pair within
+// `radius` is among the candidates.
+template <int D>
+NeighbourList filterNeighbourList(const NeighbourList& candidates, const std::vector<Vec<D>>& x,
+                                  double radius);
+
 // Same, between two point sets: for each point of `query`, the points of `source` within
 // `radius` (no self entry, no body filter). Used for contact between bodies.
 template <int D>

@@ -24,13 +24,35 @@ void ReferenceConfiguration<D>::setInitial(const ParticleSet<D>& particles, bool
 
 template <int D>
 long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<int>& body,
-                                        double radius)
+                                        double radius, bool reuseCandidates)
 {
     searchRadius = radius;
-    neighbours = buildNeighbourList<D>(x, body, radius);
+    if (!reuseCandidates)
+    {
+        neighbours = buildNeighbourList<D>(x, body, radius);
+        candidates = NeighbourList();
+        candidateX.clear();
+    }
+    else
+    {
+        const double skin = 0.1 * radius;
+        bool valid = candidateRadius == radius + skin && candidateX.size() == x.size();
+        const double limit2 = 0.25 * skin * skin;
+        for (std::size_t a = 0; valid && a < x.size(); ++a)
+        {
+            valid = (x[a] - candidateX[a]).squaredNorm() < limit2;
+        }
+        if (!valid)
+        {
+            candidates = buildNeighbourList<D>(x, body, radius + skin);
+            candidateX = x;
+            candidateRadius = radius + skin;
+        }
+        neighbours = filterNeighbourList<D>(candidates, x, radius);
+    }
     const std::size_t pairs = neighbours.pairCount();
     W.resize(pairs);
-    gradW.resize(pairs);
+    dWdrOverR.resize(pairs);
     const std::size_t n = size();
 #pragma omp parallel if (useThreads(n))
     {
@@ -54,13 +76,12 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
             {
                 W[first + i] = w[i];
                 // ∇W_ab = W'(r) (x_a - x_b)/r; zero for the particle itself.
-                gradW[first + i] =
-                    r[i] > 0.0 ? Vec<D>((dw[i] / r[i]) * (x[a] - x[neighbours.indices[first + i]]))
-                               : Vec<D>::Zero();
+                dWdrOverR[first + i] = r[i] > 0.0 ? dw[i] / r[i] : 0.0;
             }
         }
     }
-    return gradient.build(neighbours, x, V, gradW);
+    return gradient.build(neighbours, x, V,
+                          [this](std::size_t a, std::size_t k) { return gradW(a, k); });
 }
 
 template struct ReferenceConfiguration<1>;

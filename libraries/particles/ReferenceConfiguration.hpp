@@ -27,10 +27,17 @@ struct ReferenceConfiguration
 
     NeighbourList neighbours;      // in x^r, same body, self first
     std::vector<double> W;         // per pair: W(|x^r_ab|)
-    std::vector<Vec<D>> gradW;     // per pair: ∇W_ab = W'(r)(x^r_a - x^r_b)/r
-    CorrectedGradient<D> gradient; // L_a, e_a from gradW
+    // Per pair W'(r)/r, so that ∇W_ab = W'(r)(x^r_a - x^r_b)/r = gradW(a, k): rebuilding the
+    // vector from x^r costs the loops no more memory traffic than storing it, at half the size.
+    std::vector<double> dWdrOverR;
+    CorrectedGradient<D> gradient; // L_a, e_a from ∇W
     double searchRadius = 0.0;
     long updateStep = 0; // time step at which x^r was last set
+
+    // Candidate pairs for moving references (see rebuild).
+    NeighbourList candidates;
+    std::vector<Vec<D>> candidateX;
+    double candidateRadius = 0.0;
 
     std::size_t size() const { return x.size(); }
 
@@ -39,12 +46,21 @@ struct ReferenceConfiguration
 
     // Recomputes neighbour lists, kernel values and corrected gradients from x^r and V^r.
     // Returns the first particle whose corrected gradient is singular, or -1.
-    long rebuild(const Kernel& kernel, const std::vector<int>& body, double radius);
+    // reuseCandidates: keep Verlet-style candidate lists (radius + 10 % skin) between calls and
+    // only filter them while no particle has moved more than half the skin — for a reference
+    // that moves often; the lists are the same as from a fresh search.
+    long rebuild(const Kernel& kernel, const std::vector<int>& body, double radius,
+                 bool reuseCandidates = false);
 
+    // ∇W_ab for slot k of a's list.
+    Vec<D> gradW(std::size_t a, std::size_t k) const
+    {
+        return dWdrOverR[k] * (x[a] - x[neighbours.indices[k]]);
+    }
     // g_a(b) for slot k of a's list (k > begin(a)): V_b L_a ∇W_ab.
     Vec<D> g(std::size_t a, std::size_t k) const
     {
-        return V[neighbours.indices[k]] * (gradient.L[a] * gradW[k]);
+        return V[neighbours.indices[k]] * (gradient.L[a] * gradW(a, k));
     }
     // g_a(a) = L_a e_a
     Vec<D> gSelf(std::size_t a) const { return gradient.L[a] * gradient.e[a]; }

@@ -18,12 +18,12 @@ void writeParticleFile(const std::filesystem::path& file, const InitialParticles
 {
     VtuData data;
     data.points = particles.X;
-    data.pointData["volume"] = VtuArray{1, particles.V, false, {}};
-    VtuArray body{1, {}, true, {}};
+    data.pointData["volume"] = VtuArray{1, particles.V, false, {}, {}};
+    VtuArray body{1, {}, true, {}, {}};
     body.values.assign(particles.body.begin(), particles.body.end());
     data.pointData["bodyId"] = body;
-    data.fieldData["spacing"] = VtuArray{1, {particles.spacing}, false, {}};
-    data.fieldData["dimension"] = VtuArray{1, {static_cast<double>(particles.dimension)}, true, {}};
+    data.fieldData["spacing"] = VtuArray{1, {particles.spacing}, false, {}, {}};
+    data.fieldData["dimension"] = VtuArray{1, {static_cast<double>(particles.dimension)}, true, {}, {}};
     data.stringFields["bodyNames"] = particles.bodyNames;
     writeVtu(file, data);
 }

@@ -158,8 +158,9 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
             wantEnergy = wantEnergy || object->needsStrainEnergy(step_, time_);
         }
         ForceInput<D> in{particles_.x, particles_.V0, particles_.body, particles_.bodies,
-                         materials_, reference_->reference()};
-        ForceOutput<D> out{force_, nextF_, nextP_};
+                         materials_, reference_->reference(),
+                         reference_->reference().updateStep == step_};
+        ForceOutput<D> out{acceleration_, nextF_, nextP_};
         status = scheme_->computeForces(in, out, wantEnergy);
         if (!status.ok())
         {
@@ -168,11 +169,12 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         particles_.F.swap(nextF_);
         particles_.P.swap(nextP_);
 
-        // 3. Accelerations; fixed particles discard their force.
+        // 3. Accelerations (in place of the forces); fixed particles discard their force.
         for (std::size_t a = 0; a < n; ++a)
         {
-            acceleration_[a] = particles_.fixed[a] ? Vec<D>::Zero()
-                                                   : Vec<D>(force_[a] / particles_.m[a] + gravity_);
+            acceleration_[a] = particles_.fixed[a]
+                                   ? Vec<D>::Zero()
+                                   : Vec<D>(acceleration_[a] / particles_.m[a] + gravity_);
         }
 
         // Contact work of the last kick, ΔW = Σ m Δv·(v^{n+1/2} + ½Δv + ½Δt a^{n+1}) (spec
@@ -216,19 +218,12 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
                           (control_.maxSteps && step_ - firstStep >= *control_.maxSteps);
         const double dt = last ? 0.0 : deltaT_;
 
-        // 5. Velocities: v^n (synchronised) and v^{n+1/2}.
+        // 5. The synchronised velocity v^n (v^{n+1/2} follows after the output, in place: the
+        //    output holds v^{n-1/2}, which a restart needs).
+        const double syncFactor = halfStepVelocity_ ? 0.5 * previousDeltaT_ : 0.0;
         for (std::size_t a = 0; a < n; ++a)
         {
-            if (halfStepVelocity_)
-            {
-                velocitySync_[a] = particles_.v[a] + 0.5 * previousDeltaT_ * acceleration_[a];
-                velocityHalf_[a] = particles_.v[a] + 0.5 * (previousDeltaT_ + dt) * acceleration_[a];
-            }
-            else
-            {
-                velocitySync_[a] = particles_.v[a];
-                velocityHalf_[a] = particles_.v[a] + 0.5 * dt * acceleration_[a];
-            }
+            velocitySync_[a] = particles_.v[a] + syncFactor * acceleration_[a];
         }
 
         // 6. Function objects and output at level n.
@@ -293,9 +288,10 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
             break;
         }
 
-        // 7. Advance: x^{n+1} = x^n + Δt v^{n+1/2}; fixed particles stay.
+        // 7. Advance: v^{n+1/2} = v^{n-1/2} + ½(Δt_{n-1} + Δt_n) a^n (v^{1/2} = v^0 + ½Δt_0 a^0),
+        //    x^{n+1} = x^n + Δt v^{n+1/2}; fixed particles stay.
         previousX_ = particles_.x;
-        particles_.v.swap(velocityHalf_);
+        const double kick = halfStepVelocity_ ? 0.5 * (previousDeltaT_ + dt) : 0.5 * dt;
         double work = 0.0;
         for (std::size_t a = 0; a < n; ++a)
         {
@@ -304,6 +300,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
                 particles_.v[a].setZero();
                 continue;
             }
+            particles_.v[a] += kick * acceleration_[a];
             const Vec<D> move = dt * particles_.v[a];
             particles_.x[a] += move;
             work += particles_.m[a] * gravity_.dot(move);

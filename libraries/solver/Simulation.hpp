@@ -103,9 +103,7 @@ private:
     double lastGoodTime_ = 0.0;
 
     // Work arrays, allocated once.
-    std::vector<Vec<D>> force_;
-    std::vector<Vec<D>> acceleration_;
-    std::vector<Vec<D>> velocityHalf_;   // v^{n+1/2}
+    std::vector<Vec<D>> acceleration_;   // the internal force T, then a = T/m + g in place
     std::vector<Vec<D>> velocitySync_;   // v^n
     std::vector<Vec<D>> previousX_;      // x of the last good level
     std::vector<Vec<D>> contactDeltaV_;

@@ -40,16 +40,18 @@ long outputIndexOf(const std::string& fileName, const std::string& caseName)
     return std::stol(digits);
 }
 
+// Display arrays: single precision, embedded in 3D (3 or 9 components) as ParaView expects.
+// Restart arrays: double precision with the case's own D or D*D components.
 template <int D>
-VtuArray vectors(const std::vector<Vec<D>>& values)
+VtuArray displayVectors(const std::vector<Vec<D>>& values)
 {
-    VtuArray array{3, {}, false, {}};
-    array.values.reserve(3 * values.size());
+    VtuArray array{3, {}, false, {}, {}};
+    array.singles.reserve(3 * values.size());
     for (const auto& v : values)
     {
         for (int d = 0; d < 3; ++d)
         {
-            array.values.push_back(d < D ? v[d] : 0.0);
+            array.singles.push_back(d < D ? static_cast<float>(v[d]) : 0.0f);
         }
     }
     return array;
@@ -57,10 +59,10 @@ VtuArray vectors(const std::vector<Vec<D>>& values)
 
 // D×D matrices embedded in 3×3 (plane strain: F_zz = 1; stresses: the in-plane part).
 template <int D>
-VtuArray matrices(const std::vector<Mat<D>>& values, bool identityPadding)
+VtuArray displayMatrices(const std::vector<Mat<D>>& values, bool identityPadding)
 {
-    VtuArray array{9, {}, false, {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"}};
-    array.values.reserve(9 * values.size());
+    VtuArray array{9, {}, false, {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"}, {}};
+    array.singles.reserve(9 * values.size());
     for (const auto& m : values)
     {
         const Eigen::Matrix3d full = embed<D>(m, identityPadding);
@@ -68,7 +70,40 @@ VtuArray matrices(const std::vector<Mat<D>>& values, bool identityPadding)
         {
             for (int j = 0; j < 3; ++j)
             {
-                array.values.push_back(full(i, j));
+                array.singles.push_back(static_cast<float>(full(i, j)));
+            }
+        }
+    }
+    return array;
+}
+
+template <int D>
+VtuArray exactVectors(const std::vector<Vec<D>>& values)
+{
+    VtuArray array{D, {}, false, {}, {}};
+    array.values.reserve(D * values.size());
+    for (const auto& v : values)
+    {
+        for (int d = 0; d < D; ++d)
+        {
+            array.values.push_back(v[d]);
+        }
+    }
+    return array;
+}
+
+template <int D>
+VtuArray exactMatrices(const std::vector<Mat<D>>& values)
+{
+    VtuArray array{D * D, {}, false, {}, {}};
+    array.values.reserve(D * D * values.size());
+    for (const auto& m : values)
+    {
+        for (int i = 0; i < D; ++i)
+        {
+            for (int j = 0; j < D; ++j)
+            {
+                array.values.push_back(m(i, j));
             }
         }
     }
@@ -78,14 +113,14 @@ VtuArray matrices(const std::vector<Mat<D>>& values, bool identityPadding)
 template <class T>
 VtuArray scalars(const std::vector<T>& values, bool integer)
 {
-    VtuArray array{1, {}, integer, {}};
+    VtuArray array{1, {}, integer, {}, {}};
     array.values.assign(values.begin(), values.end());
     return array;
 }
 
 VtuArray scalar(double value)
 {
-    return VtuArray{1, {value}, false, {}};
+    return VtuArray{1, {value}, false, {}, {}};
 }
 
 const VtuArray& need(const VtuData& data, const std::map<std::string, VtuArray>& arrays,
@@ -102,14 +137,15 @@ const VtuArray& need(const VtuData& data, const std::map<std::string, VtuArray>&
     return found->second;
 }
 
+// Reads an array of `stride` components per particle (D for the restart arrays, 3 for points).
 template <int D>
-void readVectors(const VtuArray& array, std::vector<Vec<D>>& out)
+void readVectors(const std::vector<double>& values, std::size_t stride, std::vector<Vec<D>>& out)
 {
     for (std::size_t a = 0; a < out.size(); ++a)
     {
         for (int d = 0; d < D; ++d)
         {
-            out[a][d] = array.values[3 * a + static_cast<std::size_t>(d)];
+            out[a][d] = values[stride * a + static_cast<std::size_t>(d)];
         }
     }
 }
@@ -123,7 +159,8 @@ void readMatrices(const VtuArray& array, std::vector<Mat<D>>& out)
         {
             for (int j = 0; j < D; ++j)
             {
-                out[a](i, j) = array.values[9 * a + static_cast<std::size_t>(3 * i + j)];
+                out[a](i, j) = array.values[static_cast<std::size_t>(D * D) * a +
+                                            static_cast<std::size_t>(D * i + j)];
             }
         }
     }
@@ -194,7 +231,14 @@ void Simulation<D>::writeOutput(bool restartable, long step, double time,
 {
     const std::size_t n = particles_.size();
     VtuData data;
-    data.points = vectors<D>(particles_.x).values;
+    data.points.reserve(3 * n);
+    for (const auto& x : particles_.x)
+    {
+        for (int d = 0; d < 3; ++d)
+        {
+            data.points.push_back(d < D ? x[d] : 0.0);
+        }
+    }
     std::vector<Vec<D>> displacement(n);
     std::vector<double> J(n);
     for (std::size_t a = 0; a < n; ++a)
@@ -202,36 +246,39 @@ void Simulation<D>::writeOutput(bool restartable, long step, double time,
         displacement[a] = particles_.x[a] - particles_.X[a];
         J[a] = particles_.F[a].determinant();
     }
-    data.pointData["displacement"] = vectors<D>(displacement);
-    data.pointData["velocity"] = vectors<D>(velocitySync_);
-    data.pointData["F"] = matrices<D>(particles_.F, true);
-    data.pointData["P"] = matrices<D>(particles_.P, false);
-    data.pointData["J"] = scalars(J, false);
+    data.pointData["displacement"] = displayVectors<D>(displacement);
+    data.pointData["velocity"] = displayVectors<D>(velocitySync_);
+    data.pointData["F"] = displayMatrices<D>(particles_.F, true);
+    data.pointData["P"] = displayMatrices<D>(particles_.P, false);
+    VtuArray jacobian{1, {}, false, {}, {}};
+    jacobian.singles.assign(J.begin(), J.end());
+    data.pointData["J"] = jacobian;
     data.pointData["bodyId"] = scalars(particles_.body, true);
     data.pointData["fixed"] = scalars(particles_.fixed, true);
     // What a restart needs beyond the display fields.
-    data.pointData["initialPosition"] = vectors<D>(particles_.X);
+    data.pointData["initialPosition"] = exactVectors<D>(particles_.X);
     data.pointData["initialVolume"] = scalars(particles_.V0, false);
     data.pointData["mass"] = scalars(particles_.m, false);
-    data.pointData["velocityHalfStep"] = vectors<D>(particles_.v);
+    data.pointData["velocityHalfStep"] = exactVectors<D>(particles_.v);
     const ReferenceConfiguration<D>& ref = reference_->reference();
     if (formulation_->updatesReference())
     {
-        data.pointData["referencePosition"] = vectors<D>(ref.x);
+        data.pointData["referencePosition"] = exactVectors<D>(ref.x);
         data.pointData["referenceVolume"] = scalars(ref.V, false);
-        data.pointData["referenceF"] = matrices<D>(ref.F, true);
+        data.pointData["referenceF"] = exactMatrices<D>(ref.F);
         if (!ref.K.empty())
         {
-            VtuArray K{27, {}, false, {}};
+            VtuArray K{D * D * D, {}, false, {}, {}};
+            K.values.reserve(D * D * D * n);
             for (const auto& tensor : ref.K)
             {
-                for (int i = 0; i < 3; ++i)
+                for (int i = 0; i < D; ++i)
                 {
-                    for (int j = 0; j < 3; ++j)
+                    for (int j = 0; j < D; ++j)
                     {
-                        for (int k = 0; k < 3; ++k)
+                        for (int k = 0; k < D; ++k)
                         {
-                            K.values.push_back(i < D && j < D && k < D ? tensor(i, j, k) : 0.0);
+                            K.values.push_back(tensor(i, j, k));
                         }
                     }
                 }
@@ -303,13 +350,9 @@ bool Simulation<D>::restoreLatest(RunLog& log)
             return need(data, data.pointData, name, file);
         };
         const std::size_t n = particles_.size();
-        std::vector<Vec<D>> points(n);
-        readVectors<D>(VtuArray{3, data.points, false, {}}, points);
-        particles_.x = points;
-        readVectors<D>(array("initialPosition"), particles_.X);
-        readVectors<D>(array("velocityHalfStep"), particles_.v);
-        readVectors<D>(array("velocity"), velocitySync_);
-        readMatrices<D>(array("F"), particles_.F);
+        readVectors<D>(data.points, 3, particles_.x);
+        readVectors<D>(array("initialPosition").values, D, particles_.X);
+        readVectors<D>(array("velocityHalfStep").values, D, particles_.v);
         for (std::size_t a = 0; a < n; ++a)
         {
             particles_.V0[a] = array("initialVolume").values[a];
@@ -322,7 +365,7 @@ bool Simulation<D>::restoreLatest(RunLog& log)
             saved.x.resize(n);
             saved.V.resize(n);
             saved.F.resize(n);
-            readVectors<D>(array("referencePosition"), saved.x);
+            readVectors<D>(array("referencePosition").values, D, saved.x);
             saved.V = array("referenceVolume").values;
             readMatrices<D>(array("referenceF"), saved.F);
             if (reference_->carriesK())
@@ -337,7 +380,9 @@ bool Simulation<D>::restoreLatest(RunLog& log)
                         {
                             for (int k = 0; k < D; ++k)
                             {
-                                saved.K[a](i, j, k) = K[27 * a + static_cast<std::size_t>(9 * i + 3 * j + k)];
+                                saved.K[a](i, j, k) =
+                                    K[static_cast<std::size_t>(D * D * D) * a +
+                                      static_cast<std::size_t>(D * D * i + D * j + k)];
                             }
                         }
                     }

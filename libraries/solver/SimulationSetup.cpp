@@ -109,9 +109,7 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
     }
 
     const std::size_t n = particles_.size();
-    force_.assign(n, Vec<D>::Zero());
     acceleration_.assign(n, Vec<D>::Zero());
-    velocityHalf_.assign(n, Vec<D>::Zero());
     velocitySync_ = particles_.v;
     previousX_ = particles_.x;
     contactDeltaV_.assign(n, Vec<D>::Zero());

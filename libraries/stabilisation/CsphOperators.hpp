@@ -6,8 +6,8 @@
 //       = -V_c Σ_{a≠c} (U_a L_a) d_ac - (U_c L_c) e_c                     (gather form)
 //
 // where d_ab is the gradient used for the pair. `GradientSet` supplies it:
-//   outgoing(k)  d_ab for slot k of a's list (pair a -> b)
-//   incoming(k)  d_ba for slot k of a's list (the gradient b's operator uses for a)
+//   outgoing(a, k)  d_ab for slot k of a's list (pair a -> b)
+//   incoming(a, k)  d_ba for slot k of a's list (the gradient b's operator uses for a)
 //   L(a), e(a)   the corrected-gradient data.
 // For the standard kernel gradient incoming(k) = -outgoing(k) (the kernel gradient is odd);
 // the `vidal` scheme supplies shifted gradients instead.
@@ -27,8 +27,8 @@ struct StandardGradients
 {
     const ReferenceConfiguration<D>& ref;
 
-    const Vec<D>& outgoing(std::size_t k) const { return ref.gradW[k]; }
-    Vec<D> incoming(std::size_t k) const { return -ref.gradW[k]; }
+    Vec<D> outgoing(std::size_t a, std::size_t k) const { return ref.gradW(a, k); }
+    Vec<D> incoming(std::size_t a, std::size_t k) const { return -ref.gradW(a, k); }
     const Mat<D>& L(std::size_t a) const { return ref.gradient.L[a]; }
     const Vec<D>& e(std::size_t a) const { return ref.gradient.e[a]; }
 };
@@ -44,7 +44,7 @@ Mat<D> incrementalGradient(std::size_t a, const std::vector<Vec<D>>& x,
     for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
     {
         const std::size_t b = list.indices[k];
-        sum.noalias() += (ref.V[b] * (x[b] - xa)) * gradients.outgoing(k).transpose();
+        sum.noalias() += (ref.V[b] * (x[b] - xa)) * gradients.outgoing(a, k).transpose();
     }
     return sum * gradients.L(a).transpose();
 }
@@ -58,7 +58,7 @@ Vec<D> gatherCsphForce(std::size_t c, const ReferenceConfiguration<D>& ref,
     Vec<D> sum = Vec<D>::Zero();
     for (std::size_t k = list.begin(c) + 1; k < list.end(c); ++k)
     {
-        sum.noalias() += UL[list.indices[k]] * gradients.incoming(k);
+        sum.noalias() += UL[list.indices[k]] * gradients.incoming(c, k);
     }
     return -ref.V[c] * sum - UL[c] * gradients.e(c);
 }
@@ -221,7 +221,9 @@ public:
                 ChunkTally& tally = tallies[i];
                 for (std::size_t a = chunk.begin; a < chunk.end; ++a)
                 {
-                    const Mat<D> f = incrementalGradient<D>(a, in.x, in.ref, gradients);
+                    const Mat<D> f = in.atReference
+                                         ? Mat<D>::Identity()
+                                         : incrementalGradient<D>(a, in.x, in.ref, gradients);
                     if (fOut)
                     {
                         (*fOut)[a] = f;

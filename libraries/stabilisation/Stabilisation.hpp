@@ -32,6 +32,9 @@ struct ForceInput
     const std::vector<BodyRange>& bodies;              // contiguous particle ranges
     const std::vector<const Material<D>*>& materials;  // by body
     const ReferenceConfiguration<D>& ref;
+    // x is the reference configuration itself (bitwise; the reference was set from these
+    // positions this step), so f = I and ∇f = 0 exactly and need not be computed.
+    bool atReference = false;
 };
 
 // What a force evaluation writes.

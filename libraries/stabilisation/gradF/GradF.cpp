@@ -130,18 +130,26 @@ typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vec
 {
     const NeighbourList& list = ref.neighbours;
     Kinematics kin;
-    kin.f = incrementalGradient<D>(a, x, ref, StandardGradients<D>{ref});
-    kin.F = kin.f * ref.F[a];
-    // Least squares for ½H: c_a = [Σ_b Ŵ_ab y_ab z_ab^T] Z_a^{-1}, y_ab = x_ba - f_a x^r_ba.
-    MatDM R = MatDM::Zero();
+    // One pass over the neighbours for both f_a (spec §2) and the least-squares right-hand
+    // side Σ_b Ŵ_ab y_ab z_ab^T with y_ab = x_ba - f_a x^r_ba, which splits as
+    // Σ_b Ŵ_ab x_ba z_ab^T - f_a Y_a^T (Y_a = Σ_b Ŵ_ab z_ab ⊗ x^r_ba is precomputed).
+    Mat<D> moment = Mat<D>::Zero();
+    MatDM Rx = MatDM::Zero();
+    const Vec<D> xa = x[a];
+    const Vec<D> xra = ref.x[a];
+    const double invDenominator = invDenominator_[a];
     for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
     {
         const std::size_t b = list.indices[k];
-        const Vec<D> xr = ref.x[b] - ref.x[a];
-        const Vec<D> y = (x[b] - x[a]) - kin.f * xr;
-        R.noalias() += (weight(ref, a, k) * y) * monomials<D>(xr).transpose();
+        const Vec<D> xba = x[b] - xa;
+        moment.noalias() += (ref.V[b] * xba) * (ref.dWdrOverR[k] * (xra - ref.x[b])).transpose();
+        Rx.noalias() += (ref.W[k] * ref.V[b] * invDenominator * xba) *
+                        monomials<D>(Vec<D>(ref.x[b] - xra)).transpose();
     }
-    const MatDM c = R * Zinv_[a];
+    kin.f = moment * ref.gradient.L[a].transpose();
+    kin.F = kin.f * ref.F[a];
+    // Least squares for ½H: c_a = [Σ_b Ŵ_ab y_ab z_ab^T] Z_a^{-1}.
+    const MatDM c = (Rx - kin.f * Y_[a].transpose()) * Zinv_[a];
     kin.H = hessianFromCoefficients<D>(c);
     // G[k] = H[k] F^r + f K[k]  (G_ijk = H_imk F^r_mj + f_im K_mjk)
     for (int k = 0; k < D; ++k)
@@ -153,6 +161,18 @@ typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vec
             kin.G.slice[kk] += kin.f * ref.K[a].slice[kk];
         }
     }
+    return kin;
+}
+
+template <int D>
+typename GradF<D>::Kinematics GradF<D>::kinematicsAtReference(std::size_t a,
+                                                              const ReferenceConfiguration<D>& ref) const
+{
+    Kinematics kin;
+    kin.f.setIdentity();
+    kin.F = ref.F[a];
+    kin.H = Tensor3<D>::zero();
+    kin.G = ref.K.empty() ? Tensor3<D>::zero() : ref.K[a];
     return kin;
 }
 
@@ -233,7 +253,8 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
             ChunkTally& tally = tallies[i];
             for (std::size_t a = chunk.begin; a < chunk.end; ++a)
             {
-                Kinematics kin = kinematics(a, in.x, ref);
+                Kinematics kin = in.atReference ? kinematicsAtReference(a, ref)
+                                                : kinematics(a, in.x, ref);
                 double J;
                 if (!admissible<D>(kin.F, J))
                 {
@@ -302,7 +323,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
             {
                 const std::size_t a = list.indices[k];
                 const Vec<D> xr = ref.x[a] - ref.x[c];
-                sum.noalias() -= UL_[a] * ref.gradW[k]; // d_ac = ∇W_ac = -∇W_ca
+                sum.noalias() += UL_[a] * (ref.dWdrOverR[k] * xr); // d_ac = ∇W_ac = -∇W_ca
                 sum.noalias() += ref.W[k] * (Cw_[a] * monomials<D>(xr));
             }
             out.T[c] = -ref.V[c] * sum - UL_[c] * ref.gradient.e[c] + selfTerm_[c];

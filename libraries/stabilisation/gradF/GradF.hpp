@@ -51,6 +51,8 @@ public:
     };
     Kinematics kinematics(std::size_t a, const std::vector<Vec<D>>& x,
                           const ReferenceConfiguration<D>& ref) const;
+    // The same at x = x^r: f = I, H = 0, G = K.
+    Kinematics kinematicsAtReference(std::size_t a, const ReferenceConfiguration<D>& ref) const;
 
 private:
     // Per-reference data of particle a (spec §6.2, §6.3).

@@ -65,7 +65,8 @@ long Vidal<D>::prepare(const ReferenceConfiguration<D>& ref)
             in_[k] = kernelGradient<D>(kernel_, Vec<D>(ref.x[b] + shift - ref.x[a]));
         }
     }
-    return corrected_.build(list, ref.x, ref.V, out_);
+    return corrected_.build(list, ref.x, ref.V,
+                            [this](std::size_t, std::size_t k) { return out_[k]; });
 }
 
 template <int D>

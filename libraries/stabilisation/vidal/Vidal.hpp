@@ -30,8 +30,8 @@ struct ShiftedGradients
     const std::vector<Vec<D>>& in;  // ∇W(p_b - x^r_a) for slot k = (a, b)
     const CorrectedGradient<D>& corrected;
 
-    const Vec<D>& outgoing(std::size_t k) const { return out[k]; }
-    const Vec<D>& incoming(std::size_t k) const { return in[k]; }
+    const Vec<D>& outgoing(std::size_t, std::size_t k) const { return out[k]; }
+    const Vec<D>& incoming(std::size_t, std::size_t k) const { return in[k]; }
     const Mat<D>& L(std::size_t a) const { return corrected.L[a]; }
     const Vec<D>& e(std::size_t a) const { return corrected.e[a]; }
 };

@@ -126,3 +126,18 @@ TEST_CASE("neighbour lists: self first, sorted, symmetric, same body only", "[ne
     const NeighbourList cross = buildCrossNeighbourList<2>(points, points, radius);
     CHECK(cross.pairCount() > list.pairCount());
 }
+
+TEST_CASE("filtered candidate lists equal a fresh search", "[neighbours]")
+{
+    auto points = test::lattice<2>(15, 0.3, 8);
+    const std::vector<int> body(points.size(), 0);
+    const NeighbourList candidates = buildNeighbourList<2>(points, body, 2.2);
+    for (auto& p : points)
+    {
+        p += Vec<2>(0.04 * std::sin(7 * p[1]), 0.04 * std::cos(5 * p[0])); // less than half the skin
+    }
+    const NeighbourList fresh = buildNeighbourList<2>(points, body, 2.0);
+    const NeighbourList filtered = filterNeighbourList<2>(candidates, points, 2.0);
+    CHECK(filtered.offsets == fresh.offsets);
+    CHECK(filtered.indices == fresh.indices);
+}

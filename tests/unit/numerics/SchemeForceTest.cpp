@@ -113,7 +113,7 @@ void checkForces(const std::string& name, bool updated)
             for (std::size_t k = fixture.ref.neighbours.begin(a) + 1; k < fixture.ref.neighbours.end(a); ++k)
             {
                 const std::size_t b = fixture.ref.neighbours.indices[k];
-                sum += fixture.ref.V[b] * (x[b] - x[a]) * fixture.ref.gradW[k].transpose();
+                sum += fixture.ref.V[b] * (x[b] - x[a]) * fixture.ref.gradW(a, k).transpose();
             }
             f[a] = sum * fixture.ref.gradient.L[a].transpose();
         }
