@@ -4,6 +4,7 @@
 //   then neighbours, kernels, corrected gradients and the scheme's own data are rebuilt.
 
 #include "formulations/Formulation.hpp"
+#include "particles/Parallel.hpp"
 #include "stabilisation/Stabilisation.hpp"
 
 namespace sph
@@ -66,7 +67,9 @@ public:
             return false;
         }
         ref_.x = particles.x;
-        for (std::size_t a = 0; a < F.size(); ++a)
+        const std::size_t n = F.size();
+#pragma omp parallel for schedule(static) if (useThreads(n))
+        for (std::size_t a = 0; a < n; ++a)
         {
             ref_.V[a] = particles.V0[a] * F[a].determinant();
         }
@@ -85,7 +88,7 @@ private:
     {
         ForceStatus status;
         long bad = ref_.rebuild(kernel_, body, scheme_.searchRadius(kernel_),
-                                formulation_.updatesReference());
+                                formulation_.updatesReference(), scheme_.needsKernelValues());
         if (bad >= 0)
         {
             status.badParticle = bad;

@@ -24,7 +24,7 @@ void ReferenceConfiguration<D>::setInitial(const ParticleSet<D>& particles, bool
 
 template <int D>
 long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<int>& body,
-                                        double radius, bool reuseCandidates)
+                                        double radius, bool reuseCandidates, bool keepKernelValues)
 {
     searchRadius = radius;
     if (!reuseCandidates)
@@ -51,7 +51,15 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
         neighbours = filterNeighbourList<D>(candidates, x, radius);
     }
     const std::size_t pairs = neighbours.pairCount();
-    W.resize(pairs);
+    if (keepKernelValues)
+    {
+        W.resize(pairs);
+    }
+    else
+    {
+        W.clear();
+        W.shrink_to_fit();
+    }
     dWdrOverR.resize(pairs);
     const std::size_t n = size();
 #pragma omp parallel if (useThreads(n))
@@ -74,7 +82,10 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
             kernel.evaluate(r.data(), count, w.data(), dw.data());
             for (std::size_t i = 0; i < count; ++i)
             {
-                W[first + i] = w[i];
+                if (keepKernelValues)
+                {
+                    W[first + i] = w[i];
+                }
                 // ∇W_ab = W'(r) (x_a - x_b)/r; zero for the particle itself.
                 dWdrOverR[first + i] = r[i] > 0.0 ? dw[i] / r[i] : 0.0;
             }

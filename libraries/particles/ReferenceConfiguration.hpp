@@ -26,7 +26,7 @@ struct ReferenceConfiguration
     std::vector<Tensor3<D>> K; // ∂F^r/∂x^r, only when the scheme carries it (else empty)
 
     NeighbourList neighbours;      // in x^r, same body, self first
-    std::vector<double> W;         // per pair: W(|x^r_ab|)
+    std::vector<double> W;         // per pair: W(|x^r_ab|), when the scheme needs it
     // Per pair W'(r)/r, so that ∇W_ab = W'(r)(x^r_a - x^r_b)/r = gradW(a, k): rebuilding the
     // vector from x^r costs the loops no more memory traffic than storing it, at half the size.
     std::vector<double> dWdrOverR;
@@ -49,8 +49,9 @@ struct ReferenceConfiguration
     // reuseCandidates: keep Verlet-style candidate lists (radius + 10 % skin) between calls and
     // only filter them while no particle has moved more than half the skin — for a reference
     // that moves often; the lists are the same as from a fresh search.
+    // keepKernelValues: store W per pair (else W stays empty).
     long rebuild(const Kernel& kernel, const std::vector<int>& body, double radius,
-                 bool reuseCandidates = false);
+                 bool reuseCandidates = false, bool keepKernelValues = true);
 
     // ∇W_ab for slot k of a's list.
     Vec<D> gradW(std::size_t a, std::size_t k) const

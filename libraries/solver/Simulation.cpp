@@ -2,6 +2,7 @@
 #include "solver/Simulation.hpp"
 
 #include "core/Application.hpp"
+#include "particles/Parallel.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -17,8 +18,18 @@ std::pair<double, std::size_t> Simulation<D>::stableTimeStep() const
     std::size_t body = 0;
     for (std::size_t b = 0; b < particles_.bodies.size(); ++b)
     {
+        // In chunks, in parallel: a maximum does not depend on the order.
         const BodyRange& range = particles_.bodies[b];
-        const double bodyC = materials_[b]->maxWaveSpeed(&particles_.F[range.begin], range.size());
+        const std::size_t chunk = 1024;
+        const long chunks = static_cast<long>((range.size() + chunk - 1) / chunk);
+        double bodyC = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : bodyC) if (useThreads(range.size()))
+        for (long i = 0; i < chunks; ++i)
+        {
+            const std::size_t first = range.begin + static_cast<std::size_t>(i) * chunk;
+            const std::size_t count = std::min(chunk, range.end - first);
+            bodyC = std::max(bodyC, materials_[b]->maxWaveSpeed(&particles_.F[first], count));
+        }
         if (bodyC > c)
         {
             c = bodyC;
@@ -170,6 +181,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         particles_.P.swap(nextP_);
 
         // 3. Accelerations (in place of the forces); fixed particles discard their force.
+#pragma omp parallel for schedule(static) if (useThreads(n))
         for (std::size_t a = 0; a < n; ++a)
         {
             acceleration_[a] = particles_.fixed[a]
@@ -221,6 +233,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         // 5. The synchronised velocity v^n (v^{n+1/2} follows after the output, in place: the
         //    output holds v^{n-1/2}, which a restart needs).
         const double syncFactor = halfStepVelocity_ ? 0.5 * previousDeltaT_ : 0.0;
+#pragma omp parallel for schedule(static) if (useThreads(n))
         for (std::size_t a = 0; a < n; ++a)
         {
             velocitySync_[a] = particles_.v[a] + syncFactor * acceleration_[a];
@@ -292,7 +305,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         //    x^{n+1} = x^n + Δt v^{n+1/2}; fixed particles stay.
         previousX_ = particles_.x;
         const double kick = halfStepVelocity_ ? 0.5 * (previousDeltaT_ + dt) : 0.5 * dt;
-        double work = 0.0;
+#pragma omp parallel for schedule(static) if (useThreads(n))
         for (std::size_t a = 0; a < n; ++a)
         {
             if (particles_.fixed[a])
@@ -301,11 +314,17 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
                 continue;
             }
             particles_.v[a] += kick * acceleration_[a];
-            const Vec<D> move = dt * particles_.v[a];
-            particles_.x[a] += move;
-            work += particles_.m[a] * gravity_.dot(move);
+            particles_.x[a] += dt * particles_.v[a];
         }
-        externalWork_ += work;
+        if (!gravity_.isZero())
+        {
+            double work = 0.0; // a serial sum: the same for any number of threads
+            for (std::size_t a = 0; a < n; ++a)
+            {
+                work += particles_.m[a] * gravity_.dot(particles_.x[a] - previousX_[a]);
+            }
+            externalWork_ += work;
+        }
         halfStepVelocity_ = true;
         previousDeltaT_ = dt;
 

@@ -112,7 +112,10 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
     acceleration_.assign(n, Vec<D>::Zero());
     velocitySync_ = particles_.v;
     previousX_ = particles_.x;
-    contactDeltaV_.assign(n, Vec<D>::Zero());
+    if (contact_->active())
+    {
+        contactDeltaV_.assign(n, Vec<D>::Zero());
+    }
     nextF_.assign(n, Mat<D>::Identity());
     nextP_.assign(n, Mat<D>::Zero());
 }

@@ -73,6 +73,9 @@ public:
     virtual double searchRadius(const Kernel& kernel) const { return kernel.supportRadius(); }
     // Whether the reference configuration must carry K = ∂F^r/∂x^r (the gradient-of-F scheme).
     virtual bool carriesReferenceGradient() const { return false; }
+    // Whether the scheme reads the kernel values W_ab of the reference pairs (the gradients
+    // are always there); a scheme that does not, does not pay for storing them.
+    virtual bool needsKernelValues() const { return false; }
     // Precomputes what depends only on the reference configuration; called after every rebuild.
     // Returns the first particle where that data is singular, or -1.
     virtual long prepare(const ReferenceConfiguration<D>& ref) = 0;

@@ -63,7 +63,7 @@ public:
             for (std::size_t k = list.begin(a); k < list.end(a); ++k)
             {
                 const std::size_t b = list.indices[k];
-                const double w = ref.W[k] * ref.V[b];
+                const double w = state.kernel.W((ref.x[a] - ref.x[b]).norm()) * ref.V[b];
                 weightSum += w;
                 const Vec<D> current = p.x[b] - p.x[a];
                 misfit += w * (current - p.F[a] * (p.X[b] - p.X[a])).norm();

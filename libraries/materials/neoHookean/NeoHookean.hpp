@@ -26,14 +26,19 @@ public:
     static Schema schema();
     NeoHookean(const Params& params, const typename Material<D>::Args& args);
 
+    // With cof F = J F^{-T} and c = J^{-1/3} (so 1/J = c^3, no division):
+    //   P = a F + b cof F,  a = μ c²,  b = κ (J - 1) - a I1 c³/3.
+    // The cofactor is written out (one determinant, no general inverse): this is evaluated
+    // for every neighbour of every particle by the gradient-of-F scheme.
     Mat<D> stressOf(const Mat<D>& F) const
     {
-        const double J = F.determinant();
-        const Mat<D> FinvT = F.inverse().transpose();
+        const Mat<D> C = cofactor(F);
+        const double J = (F.col(0).dot(C.col(0)));
         const double I1 = F.squaredNorm() + (3 - D);
         const double c = inverseCubeRoot(J);
-        const double Jm23 = c * c;
-        return mu_ * Jm23 * (F - (I1 / 3.0) * FinvT) + kappa_ * J * (J - 1.0) * FinvT;
+        const double a = mu_ * c * c;
+        const double b = kappa_ * (J - 1.0) - a * I1 * (c * c * c) * (1.0 / 3.0);
+        return a * F + b * C;
     }
     double energyOf(const Mat<D>& F) const
     {
@@ -56,6 +61,27 @@ public:
     std::string summary() const override;
 
 private:
+    // cof F = det(F) F^{-T}
+    static Mat<D> cofactor(const Mat<D>& F)
+    {
+        Mat<D> C;
+        if constexpr (D == 1)
+        {
+            C(0, 0) = 1.0;
+        }
+        else if constexpr (D == 2)
+        {
+            C << F(1, 1), -F(1, 0), -F(0, 1), F(0, 0);
+        }
+        else
+        {
+            C.col(0) = F.col(1).cross(F.col(2));
+            C.col(1) = F.col(2).cross(F.col(0));
+            C.col(2) = F.col(0).cross(F.col(1));
+        }
+        return C;
+    }
+
     double mu_;
     double kappa_;
 };

@@ -32,6 +32,7 @@ public:
     GradF(const Params&, const typename Stabilisation<D>::Args&) {}
 
     bool carriesReferenceGradient() const override { return true; }
+    bool needsKernelValues() const override { return true; }
     long prepare(const ReferenceConfiguration<D>& ref) override;
     ForceStatus referenceUpdate(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
                                 std::vector<Mat<D>>& F,

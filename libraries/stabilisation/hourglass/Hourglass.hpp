@@ -26,6 +26,7 @@ public:
     Hourglass(const Params& params, const typename Stabilisation<D>::Args& args);
 
     long prepare(const ReferenceConfiguration<D>&) override { return -1; }
+    bool needsKernelValues() const override { return true; }
     ForceStatus referenceUpdate(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
                                 std::vector<Mat<D>>& F, std::vector<Tensor3<D>>*) const override
     {
