@@ -63,7 +63,8 @@ private:
 };
 
 // Implements the batch and bookkeeping methods of Material<D> for a model that provides the
-// inline, non-virtual  Mat<D> stressOf(F), double energyOf(F), double waveSpeedOf(F).
+// inline, non-virtual  Mat<D> stressOf(F), double energyOf(F), double waveSpeedOf(F), and
+// optionally a faster  void stressBatch(const Mat<D>* F, Mat<D>* P, std::size_t n).
 template <int D, class Derived>
 class MaterialModel : public Material<D>
 {
@@ -74,9 +75,16 @@ public:
     Mat<D> stress(const Mat<D>& F) const final { return self().stressOf(F); }
     void evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n) const final
     {
-        for (std::size_t i = 0; i < n; ++i)
+        if constexpr (requires(const Derived& m) { m.stressBatch(F, P, n); })
         {
-            P[i] = self().stressOf(F[i]);
+            self().stressBatch(F, P, n);
+        }
+        else
+        {
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                P[i] = self().stressOf(F[i]);
+            }
         }
         if (psi)
         {

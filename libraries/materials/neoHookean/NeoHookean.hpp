@@ -60,6 +60,60 @@ public:
     double youngsModulus() const override { return 9.0 * kappa_ * mu_ / (3.0 * kappa_ + mu_); }
     std::string summary() const override;
 
+    // The same for n gradients at once, in structure-of-arrays form so the compiler vectorises
+    // the scalar part (J, I1, J^{-1/3}): the gradient-of-F scheme evaluates a stress for every
+    // neighbour of every particle. Identical to stressOf up to round-off.
+    void stressBatch(const Mat<D>* F, Mat<D>* P, std::size_t n) const
+    {
+        constexpr std::size_t block = 64;
+        double f[D * D][block];
+        double a[block];
+        double b[block];
+        for (std::size_t start = 0; start < n; start += block)
+        {
+            const std::size_t count = std::min(block, n - start);
+            for (std::size_t i = 0; i < count; ++i)
+            {
+                for (int k = 0; k < D * D; ++k)
+                {
+                    f[k][i] = F[start + i](k / D, k % D);
+                }
+            }
+#pragma omp simd
+            for (std::size_t i = 0; i < count; ++i)
+            {
+                double J;
+                double I1 = 3 - D;
+                for (int k = 0; k < D * D; ++k)
+                {
+                    I1 += f[k][i] * f[k][i];
+                }
+                if constexpr (D == 1)
+                {
+                    J = f[0][i];
+                }
+                else if constexpr (D == 2)
+                {
+                    J = f[0][i] * f[3][i] - f[1][i] * f[2][i];
+                }
+                else
+                {
+                    J = f[0][i] * (f[4][i] * f[8][i] - f[5][i] * f[7][i]) -
+                        f[1][i] * (f[3][i] * f[8][i] - f[5][i] * f[6][i]) +
+                        f[2][i] * (f[3][i] * f[7][i] - f[4][i] * f[6][i]);
+                }
+                const double c = inverseCubeRoot(J);
+                a[i] = mu_ * c * c;
+                b[i] = kappa_ * (J - 1.0) - a[i] * I1 * (c * c * c) * (1.0 / 3.0);
+            }
+            for (std::size_t i = 0; i < count; ++i)
+            {
+                const Mat<D>& Fi = F[start + i];
+                P[start + i] = a[i] * Fi + b[i] * cofactor(Fi);
+            }
+        }
+    }
+
 private:
     // cof F = det(F) F^{-T}
     static Mat<D> cofactor(const Mat<D>& F)

@@ -128,23 +128,55 @@ template <int D>
 typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vector<Vec<D>>& x,
                                                    const ReferenceConfiguration<D>& ref) const
 {
+    Scratch scratch;
+    scratch.resize(ref.neighbours.count(a));
+    return kinematics(a, x, ref, false, scratch);
+}
+
+template <int D>
+typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vector<Vec<D>>& x,
+                                                   const ReferenceConfiguration<D>& ref,
+                                                   bool atReference, Scratch& scratch) const
+{
     const NeighbourList& list = ref.neighbours;
+    const std::size_t first = list.begin(a);
+    const std::size_t count = list.count(a);
+    const Vec<D> xra = ref.x[a];
+    const double invDenominator = invDenominator_[a];
     Kinematics kin;
+    if (atReference)
+    {
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            const std::size_t b = list.indices[first + j];
+            scratch.xr[j] = ref.x[b] - xra;
+            scratch.w[j] = ref.W[first + j] * ref.V[b] * invDenominator;
+        }
+        kin.f.setIdentity();
+        kin.F = ref.F[a];
+        kin.H = Tensor3<D>::zero();
+        kin.G = ref.K.empty() ? Tensor3<D>::zero() : ref.K[a];
+        return kin;
+    }
     // One pass over the neighbours for both f_a (spec §2) and the least-squares right-hand
     // side Σ_b Ŵ_ab y_ab z_ab^T with y_ab = x_ba - f_a x^r_ba, which splits as
     // Σ_b Ŵ_ab x_ba z_ab^T - f_a Y_a^T (Y_a = Σ_b Ŵ_ab z_ab ⊗ x^r_ba is precomputed).
     Mat<D> moment = Mat<D>::Zero();
     MatDM Rx = MatDM::Zero();
     const Vec<D> xa = x[a];
-    const Vec<D> xra = ref.x[a];
-    const double invDenominator = invDenominator_[a];
-    for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
+    scratch.xr[0].setZero();
+    scratch.w[0] = ref.W[first] * ref.V[a] * invDenominator;
+    for (std::size_t j = 1; j < count; ++j)
     {
+        const std::size_t k = first + j;
         const std::size_t b = list.indices[k];
+        const Vec<D> xr = ref.x[b] - xra;
+        const double w = ref.W[k] * ref.V[b] * invDenominator;
+        scratch.xr[j] = xr;
+        scratch.w[j] = w;
         const Vec<D> xba = x[b] - xa;
-        moment.noalias() += (ref.V[b] * xba) * (ref.dWdrOverR[k] * (xra - ref.x[b])).transpose();
-        Rx.noalias() += (ref.W[k] * ref.V[b] * invDenominator * xba) *
-                        monomials<D>(Vec<D>(ref.x[b] - xra)).transpose();
+        moment.noalias() -= (ref.V[b] * ref.dWdrOverR[k] * xba) * xr.transpose(); // ∇W_ab = -W'/r x^r_ba
+        Rx.noalias() += (w * xba) * monomials<D>(xr).transpose();
     }
     kin.f = moment * ref.gradient.L[a].transpose();
     kin.F = kin.f * ref.F[a];
@@ -165,18 +197,6 @@ typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vec
 }
 
 template <int D>
-typename GradF<D>::Kinematics GradF<D>::kinematicsAtReference(std::size_t a,
-                                                              const ReferenceConfiguration<D>& ref) const
-{
-    Kinematics kin;
-    kin.f.setIdentity();
-    kin.F = ref.F[a];
-    kin.H = Tensor3<D>::zero();
-    kin.G = ref.K.empty() ? Tensor3<D>::zero() : ref.K[a];
-    return kin;
-}
-
-template <int D>
 ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
                                       const ReferenceConfiguration<D>& ref, std::vector<Mat<D>>& F,
                                       std::vector<Tensor3<D>>* newK) const
@@ -187,10 +207,14 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
     {
         newK->resize(n);
     }
-#pragma omp parallel for schedule(static) if (useThreads(n))
+#pragma omp parallel if (useThreads(n))
+    {
+    Scratch scratch;
+    scratch.resize(maxNeighbours_);
+#pragma omp for schedule(static)
     for (std::size_t a = 0; a < n; ++a)
     {
-        const Kinematics kin = kinematics(a, x, ref);
+        const Kinematics kin = kinematics(a, x, ref, false, scratch);
         F[a] = kin.F;
         if (newK)
         {
@@ -206,6 +230,7 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
                 (*newK)[a].slice[static_cast<std::size_t>(k)] = slice;
             }
         }
+    }
     }
     ForceStatus status;
     for (std::size_t a = 0; a < n; ++a)
@@ -242,9 +267,8 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
     std::vector<ChunkTally> tallies(chunks_.size());
 #pragma omp parallel if (useThreads(n))
     {
-        std::vector<Mat<D>> Fb(maxNeighbours_);
-        std::vector<Mat<D>> Pb(maxNeighbours_);
-        std::vector<double> psi(maxNeighbours_);
+        Scratch scratch;
+        scratch.resize(maxNeighbours_);
 #pragma omp for schedule(static)
         for (std::size_t i = 0; i < chunks_.size(); ++i)
         {
@@ -253,8 +277,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
             ChunkTally& tally = tallies[i];
             for (std::size_t a = chunk.begin; a < chunk.end; ++a)
             {
-                Kinematics kin = in.atReference ? kinematicsAtReference(a, ref)
-                                                : kinematics(a, in.x, ref);
+                Kinematics kin = kinematics(a, in.x, ref, in.atReference, scratch);
                 double J;
                 if (!admissible<D>(kin.F, J))
                 {
@@ -264,33 +287,30 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 }
                 out.F[a] = kin.F;
                 // Stresses at F_b(a) = F_a + G_a x^r_ba for every neighbour b (incl. a).
-                const std::size_t first = list.begin(a);
                 const std::size_t count = list.count(a);
                 for (std::size_t j = 0; j < count; ++j)
                 {
-                    const Vec<D> xr = ref.x[list.indices[first + j]] - ref.x[a];
-                    Fb[j] = kin.F + kin.G.contract(xr);
+                    scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
                 }
-                material.evaluate(Fb.data(), Pb.data(), wantEnergy ? psi.data() : nullptr,
-                                  count);
-                out.P[a] = Pb[0]; // b = a: F_a(a) = F_a
+                material.evaluate(scratch.F.data(), scratch.P.data(),
+                                  wantEnergy ? scratch.psi.data() : nullptr, count);
+                out.P[a] = scratch.P[0]; // b = a: F_a(a) = F_a
                 // S_a = Σ Ŵ P_b,  Q_a[k] = Σ Ŵ x^r_ba,k P_b
                 Mat<D> S = Mat<D>::Zero();
                 Tensor3<D> Q = Tensor3<D>::zero();
                 double energy = 0.0;
                 for (std::size_t j = 0; j < count; ++j)
                 {
-                    const std::size_t k = first + j;
-                    const double w = weight(ref, a, k);
-                    const Vec<D> xr = ref.x[list.indices[k]] - ref.x[a];
-                    S.noalias() += w * Pb[j];
+                    const double w = scratch.w[j];
+                    const Mat<D> wP = w * scratch.P[j];
+                    S.noalias() += wP;
                     for (int d = 0; d < D; ++d)
                     {
-                        Q.slice[static_cast<std::size_t>(d)].noalias() += (w * xr[d]) * Pb[j];
+                        Q.slice[static_cast<std::size_t>(d)].noalias() += scratch.xr[j][d] * wP;
                     }
                     if (wantEnergy)
                     {
-                        energy += w * psi[j];
+                        energy += w * scratch.psi[j];
                     }
                 }
                 tally.energy += in.V0[a] * energy;

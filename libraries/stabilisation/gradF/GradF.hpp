@@ -52,8 +52,29 @@ public:
     };
     Kinematics kinematics(std::size_t a, const std::vector<Vec<D>>& x,
                           const ReferenceConfiguration<D>& ref) const;
-    // The same at x = x^r: f = I, H = 0, G = K.
-    Kinematics kinematicsAtReference(std::size_t a, const ReferenceConfiguration<D>& ref) const;
+
+    // Per-neighbour quantities of one particle, computed once and reused by every loop.
+    struct Scratch
+    {
+        std::vector<Vec<D>> xr; // x^r_ba
+        std::vector<double> w;  // Ŵ_ab
+        std::vector<Mat<D>> F;  // F_b(a)
+        std::vector<Mat<D>> P;  // P(F_b(a))
+        std::vector<double> psi;
+        void resize(std::size_t n)
+        {
+            xr.resize(n);
+            w.resize(n);
+            F.resize(n);
+            P.resize(n);
+            psi.resize(n);
+        }
+    };
+    // Kinematics of particle a, filling scratch.xr and scratch.w for its neighbours; at the
+    // reference configuration (atReference) f = I, H = 0 and G = K without computing them.
+    Kinematics kinematics(std::size_t a, const std::vector<Vec<D>>& x,
+                          const ReferenceConfiguration<D>& ref, bool atReference,
+                          Scratch& scratch) const;
 
 private:
     // Per-reference data of particle a (spec §6.2, §6.3).

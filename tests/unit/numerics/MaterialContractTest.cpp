@@ -109,11 +109,12 @@ void checkMaterial(const std::string& name)
             }
         }
         CHECK((P - numeric).cwiseAbs().maxCoeff() < 1e-7 * std::max(1.0, P.cwiseAbs().maxCoeff()));
-        // The batch agrees with the single call.
+        // The batch agrees with the single call (to round-off: it may order the arithmetic
+        // differently to vectorise).
         Mat<D> batchP;
         double batchPsi;
         material->evaluate(&F, &batchP, &batchPsi, 1);
-        CHECK((batchP - P).cwiseAbs().maxCoeff() == 0.0);
+        CHECK((batchP - P).cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + P.cwiseAbs().maxCoeff()));
         CHECK(batchPsi == material->energy(F));
         // Objectivity: Ψ(QF) = Ψ(F), P(QF) = Q P(F).
         if (c.objective && D > 1)
