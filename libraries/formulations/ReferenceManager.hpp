@@ -59,8 +59,9 @@ public:
         {
             return false;
         }
-        std::vector<Mat<D>> F;
-        std::vector<Tensor3<D>> K;
+        // Into buffers kept between updates (swapped with the reference's own below).
+        std::vector<Mat<D>>& F = nextF_;
+        std::vector<Tensor3<D>>& K = nextK_;
         status = scheme_.referenceUpdate(particles.x, ref_, F, carriesK() ? &K : nullptr);
         if (!status.ok())
         {
@@ -73,10 +74,10 @@ public:
         {
             ref_.V[a] = particles.V0[a] * F[a].determinant();
         }
-        ref_.F = std::move(F);
+        ref_.F.swap(F);
         if (carriesK())
         {
-            ref_.K = std::move(K);
+            ref_.K.swap(K);
         }
         ref_.updateStep = step;
         status = rebuild(particles.body);
@@ -108,6 +109,8 @@ private:
     Stabilisation<D>& scheme_;
     const Kernel& kernel_;
     ReferenceConfiguration<D> ref_;
+    std::vector<Mat<D>> nextF_;
+    std::vector<Tensor3<D>> nextK_;
 };
 
 } // namespace sph

@@ -159,17 +159,24 @@ private:
 
 // Fills the CSR list in one search pass: each thread searches a contiguous block of particles
 // into its own buffer, then the buffers are copied in block order, so the result is the same
-// for any thread count.
+// for any thread count. The buffers live on between calls: a reference configuration that
+// moves every step would otherwise allocate (and page-fault) megabytes each step.
 template <int D, class Candidates>
-NeighbourList fillLists(std::size_t n, Candidates&& candidates)
+void fillLists(std::size_t n, Candidates&& candidates, NeighbourList& list)
 {
-    NeighbourList list;
     list.offsets.assign(n + 1, 0);
-    std::vector<std::vector<std::uint32_t>> blocks;
+    static thread_local std::vector<std::vector<std::uint32_t>> pool;
+    std::vector<std::vector<std::uint32_t>>& blocks = pool;
 #pragma omp parallel if (useThreads(n))
     {
 #pragma omp single
-        blocks.resize(static_cast<std::size_t>(omp_get_num_threads()));
+        {
+            blocks.resize(static_cast<std::size_t>(omp_get_num_threads()));
+            for (auto& block : blocks)
+            {
+                block.clear();
+            }
+        }
         const std::size_t threads = blocks.size();
         const std::size_t thread = static_cast<std::size_t>(omp_get_thread_num());
         const std::size_t first = n * thread / threads;
@@ -195,6 +202,13 @@ NeighbourList fillLists(std::size_t n, Candidates&& candidates)
         std::copy(blocks[thread].begin(), blocks[thread].end(),
                   list.indices.begin() + list.offsets[first]);
     }
+}
+
+template <int D, class Candidates>
+NeighbourList fillLists(std::size_t n, Candidates&& candidates)
+{
+    NeighbourList list;
+    fillLists<D>(n, std::forward<Candidates>(candidates), list);
     return list;
 }
 
@@ -223,8 +237,17 @@ template <int D>
 NeighbourList filterNeighbourList(const NeighbourList& candidates, const std::vector<Vec<D>>& x,
                                   double radius)
 {
+    NeighbourList list;
+    filterNeighbourList<D>(candidates, x, radius, list);
+    return list;
+}
+
+template <int D>
+void filterNeighbourList(const NeighbourList& candidates, const std::vector<Vec<D>>& x,
+                         double radius, NeighbourList& into)
+{
     const double radius2 = radius * radius;
-    return fillLists<D>(x.size(), [&](std::size_t a, std::vector<std::uint32_t>& found) {
+    fillLists<D>(x.size(), [&](std::size_t a, std::vector<std::uint32_t>& found) {
         const std::size_t first = candidates.begin(a);
         found.push_back(candidates.indices[first]); // the particle itself
         for (std::size_t k = first + 1; k < candidates.end(a); ++k)
@@ -235,7 +258,7 @@ NeighbourList filterNeighbourList(const NeighbourList& candidates, const std::ve
                 found.push_back(b);
             }
         }
-    });
+    }, into);
 }
 
 template <int D>
@@ -259,6 +282,9 @@ NeighbourList buildCrossNeighbourList(const std::vector<Vec<D>>& query,
 template NeighbourList buildNeighbourList<1>(const std::vector<Vec<1>>&, const std::vector<int>&, double);
 template NeighbourList buildNeighbourList<2>(const std::vector<Vec<2>>&, const std::vector<int>&, double);
 template NeighbourList buildNeighbourList<3>(const std::vector<Vec<3>>&, const std::vector<int>&, double);
+template void filterNeighbourList<1>(const NeighbourList&, const std::vector<Vec<1>>&, double, NeighbourList&);
+template void filterNeighbourList<2>(const NeighbourList&, const std::vector<Vec<2>>&, double, NeighbourList&);
+template void filterNeighbourList<3>(const NeighbourList&, const std::vector<Vec<3>>&, double, NeighbourList&);
 template NeighbourList filterNeighbourList<1>(const NeighbourList&, const std::vector<Vec<1>>&, double);
 template NeighbourList filterNeighbourList<2>(const NeighbourList&, const std::vector<Vec<2>>&, double);
 template NeighbourList filterNeighbourList<3>(const NeighbourList&, const std::vector<Vec<3>>&, double);

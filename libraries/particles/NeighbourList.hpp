@@ -37,6 +37,10 @@ NeighbourList buildNeighbourList(const std::vector<Vec<D>>& x, const std::vector
 template <int D>
 NeighbourList filterNeighbourList(const NeighbourList& candidates, const std::vector<Vec<D>>& x,
                                   double radius);
+// The same into an existing list, reusing its memory (no allocation once it has grown).
+template <int D>
+void filterNeighbourList(const NeighbourList& candidates, const std::vector<Vec<D>>& x,
+                         double radius, NeighbourList& into);
 
 // Same, between two point sets: for each point of `query`, the points of `source` within
 // `radius` (no self entry, no body filter). Used for contact between bodies.

@@ -1,6 +1,8 @@
 #include "particles/Parallel.hpp"
 #include "particles/ReferenceConfiguration.hpp"
 
+#include "particles/Parallel.hpp"
+
 #include <cmath>
 
 namespace sph
@@ -38,9 +40,16 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
         const double skin = 0.1 * radius;
         bool valid = candidateRadius == radius + skin && candidateX.size() == x.size();
         const double limit2 = 0.25 * skin * skin;
-        for (std::size_t a = 0; valid && a < x.size(); ++a)
+        const std::size_t n = x.size();
+        if (valid)
         {
-            valid = (x[a] - candidateX[a]).squaredNorm() < limit2;
+            std::size_t moved = 0;
+#pragma omp parallel for schedule(static) reduction(+ : moved) if (useThreads(n))
+            for (std::size_t a = 0; a < n; ++a)
+            {
+                moved += (x[a] - candidateX[a]).squaredNorm() >= limit2 ? 1 : 0;
+            }
+            valid = moved == 0;
         }
         if (!valid)
         {
@@ -48,7 +57,7 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
             candidateX = x;
             candidateRadius = radius + skin;
         }
-        neighbours = filterNeighbourList<D>(candidates, x, radius);
+        filterNeighbourList<D>(candidates, x, radius, neighbours);
     }
     const std::size_t pairs = neighbours.pairCount();
     if (keepKernelValues)

@@ -303,11 +303,11 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
 
         // 7. Advance: v^{n+1/2} = v^{n-1/2} + ½(Δt_{n-1} + Δt_n) a^n (v^{1/2} = v^0 + ½Δt_0 a^0),
         //    x^{n+1} = x^n + Δt v^{n+1/2}; fixed particles stay.
-        previousX_ = particles_.x;
         const double kick = halfStepVelocity_ ? 0.5 * (previousDeltaT_ + dt) : 0.5 * dt;
 #pragma omp parallel for schedule(static) if (useThreads(n))
         for (std::size_t a = 0; a < n; ++a)
         {
+            previousX_[a] = particles_.x[a];
             if (particles_.fixed[a])
             {
                 particles_.v[a].setZero();

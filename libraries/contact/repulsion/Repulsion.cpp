@@ -98,13 +98,31 @@ public:
         std::vector<Vec<D>> upper(bodies, Vec<D>::Constant(std::numeric_limits<double>::lowest()));
         for (std::size_t b = 0; b < bodies; ++b)
         {
-            for (std::size_t a = p.bodies[b].begin; a < p.bodies[b].end; ++a)
+            double low[D];
+            double high[D];
+            for (int d = 0; d < D; ++d)
             {
-                lower[b] = lower[b].cwiseMin(state.x[a]);
-                upper[b] = upper[b].cwiseMax(state.x[a]);
+                low[d] = std::numeric_limits<double>::max();
+                high[d] = std::numeric_limits<double>::lowest();
             }
-            lower[b].array() -= reach;
-            upper[b].array() += reach;
+            const std::size_t first = p.bodies[b].begin;
+            const std::size_t last = p.bodies[b].end;
+            // Minima and maxima do not depend on the order: parallel and deterministic.
+#pragma omp parallel for schedule(static) reduction(min : low[:D]) reduction(max : high[:D]) \
+    if (useThreads(last - first))
+            for (std::size_t a = first; a < last; ++a)
+            {
+                for (int d = 0; d < D; ++d)
+                {
+                    low[d] = std::min(low[d], state.x[a][d]);
+                    high[d] = std::max(high[d], state.x[a][d]);
+                }
+            }
+            for (int d = 0; d < D; ++d)
+            {
+                lower[b][d] = low[d] - reach;
+                upper[b][d] = high[d] + reach;
+            }
         }
         // 2. Pairs that can touch, and the particles in their overlap.
         std::vector<std::uint8_t> involved(p.size(), 0);
