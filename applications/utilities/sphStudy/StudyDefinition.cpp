@@ -1,0 +1,253 @@
+#include "StudyDefinition.hpp"
+
+#include "core/InputError.hpp"
+#include "core/Schema.hpp"
+#include "core/Suggest.hpp"
+
+#include <algorithm>
+
+namespace sph
+{
+
+namespace
+{
+
+Params validate(const Schema& schema, const Dictionary& dict, const std::string& label,
+                bool typeIsKey = false)
+{
+    ValidationContext context;
+    context.label = label;
+    if (typeIsKey)
+    {
+        context.ignoredKeys.clear();
+    }
+    return schema.validate(dict, context);
+}
+
+Schema studySchema()
+{
+    return Schema()
+        .add(Key::dict("axes", "what the study varies: axis { level { particles (...); solver "
+                               "(...); } ... }"))
+        .add(Key::dict("common", "overrides every variant shares: { particles (...); solver (...); }").optional())
+        .add(Key::integer("repeats", "runs per variant; the times are their median").min(1).defaultValue("1"))
+        .add(Key::integer("threads", "OpenMP threads per run (0: all cores)").min(0).defaultValue("0"))
+        .add(Key::dict("metrics", "error measures: name { type exactSolution | summary | "
+                                  "referenceVariant | referenceFile; ... }; the first is plotted"))
+        .add(Key::dict("plot", "{ groupBy AXIS; along AXIS; }: one line per level of groupBy, "
+                               "connecting the levels of along")
+                 .optional());
+}
+
+Schema levelSchema()
+{
+    return Schema()
+        .add(Key::stringList("particles", "overrides for sphParticles, e.g. (\"bar.n=80\")").defaultValue("()"))
+        .add(Key::stringList("solver", "overrides for sphSolid, e.g. (\"courant=0.1\")").defaultValue("()"));
+}
+
+Schema metricSchema()
+{
+    return Schema()
+        .add(Key::word("type", "how the error is measured")
+                 .choices({"exactSolution", "summary", "referenceVariant", "referenceFile"}))
+        .add(Key::word("functionObject", "exactSolution: the function object's name").optional())
+        .add(Key::string("value", "exactSolution: its result (default relativeLinfError); "
+                                  "summary: a path in summary.json, e.g. functions/energy/maxDrift")
+                 .optional())
+        .add(Key::string("file", "referenceVariant/referenceFile: a table of each variant, "
+                                 "relative to its case").optional())
+        .add(Key::word("column", "the column of that table").optional())
+        .add(Key::word("variant", "referenceVariant: the variant to compare with").optional())
+        .add(Key::string("reference", "referenceFile: the reference table, relative to the case").optional())
+        .add(Key::string("referenceColumn", "referenceFile: its column (name or 1-based number)").optional())
+        .add(Key::word("norm", "max or rms of the difference, relative to max |reference|")
+                 .choices({"max", "rms"})
+                 .defaultValue("max"));
+}
+
+} // namespace
+
+StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
+{
+    const Params p = validate(studySchema(), studyDict, "studyDict");
+    StudyDefinition study;
+    if (p.has("common"))
+    {
+        const Params q = validate(levelSchema(), p.dict("common"), "common");
+        study.common = {"common", q.stringList("particles"), q.stringList("solver")};
+    }
+    study.repeats = p.integer("repeats");
+    study.threads = p.integer("threads");
+    for (const Entry& axisEntry : p.dict("axes").entries())
+    {
+        if (!axisEntry.isDict())
+        {
+            throw InputError(axisEntry.keyLocation(), "axis '" + axisEntry.key() + "' must be a dictionary of levels",
+                             {"e.g. resolution { n40 { particles (\"bar.n=40\"); } }"});
+        }
+        StudyAxis axis{axisEntry.key(), {}};
+        for (const Entry& levelEntry : axisEntry.dict().entries())
+        {
+            if (!levelEntry.isDict())
+            {
+                throw InputError(levelEntry.keyLocation(),
+                                 "level '" + levelEntry.key() + "' of axis '" + axis.name +
+                                     "' must be a dictionary { particles (...); solver (...); }");
+            }
+            const Params q = validate(levelSchema(), levelEntry.dict(), "a study level");
+            axis.levels.push_back({levelEntry.key(), q.stringList("particles"), q.stringList("solver")});
+        }
+        if (axis.levels.empty())
+        {
+            throw InputError(axisEntry.keyLocation(), "axis '" + axis.name + "' has no level");
+        }
+        study.axes.push_back(axis);
+    }
+    if (study.axes.empty())
+    {
+        throw InputError(p.location("axes"), "studyDict: 'axes' defines no axis");
+    }
+    std::vector<std::string> variantNames;
+    for (const auto& variant : study.variants())
+    {
+        variantNames.push_back(variant.name);
+    }
+    for (const Entry& entry : p.dict("metrics").entries())
+    {
+        if (!entry.isDict())
+        {
+            throw InputError(entry.keyLocation(), "metric '" + entry.key() + "' must be a dictionary { type ...; }");
+        }
+        const Params q = validate(metricSchema(), entry.dict(), "a metric", true);
+        StudyMetric metric;
+        metric.name = entry.key();
+        metric.type = q.word("type");
+        metric.norm = q.word("norm");
+        metric.where = entry.keyLocation();
+        const auto need = [&](const char* key) {
+            if (!q.has(key))
+            {
+                throw InputError(entry.keyLocation(), "metric '" + metric.name + "' of type " +
+                                                          metric.type + " needs '" + key + "'");
+            }
+        };
+        if (metric.type == "exactSolution")
+        {
+            need("functionObject");
+            metric.value = "functions/" + q.word("functionObject") + "/" +
+                           (q.has("value") ? q.string("value") : "relativeLinfError");
+        }
+        else if (metric.type == "summary")
+        {
+            need("value");
+            metric.value = q.string("value");
+        }
+        else
+        {
+            need("file");
+            need("column");
+            metric.file = q.string("file");
+            metric.column = q.word("column");
+            if (metric.type == "referenceVariant")
+            {
+                need("variant");
+                metric.variant = q.word("variant");
+                if (std::find(variantNames.begin(), variantNames.end(), metric.variant) == variantNames.end())
+                {
+                    q.fail("variant", "metric '" + metric.name + "': no variant '" + metric.variant + "'",
+                           {"Variants are the level names joined by '_' in axis order, e.g. " +
+                                variantNames.front() + ".",
+                            didYouMean(metric.variant, variantNames)});
+                }
+            }
+            else
+            {
+                need("reference");
+                need("referenceColumn");
+                metric.reference = q.string("reference");
+                metric.referenceColumn = q.string("referenceColumn");
+            }
+        }
+        study.metrics.push_back(metric);
+    }
+    if (study.metrics.empty())
+    {
+        throw InputError(p.location("metrics"), "studyDict: 'metrics' defines no metric");
+    }
+    std::vector<std::string> axisNames;
+    for (const auto& axis : study.axes)
+    {
+        axisNames.push_back(axis.name);
+    }
+    study.groupBy = study.axes.back().name;
+    study.along = study.axes.front().name;
+    if (p.has("plot"))
+    {
+        const Params q = validate(Schema()
+                                      .add(Key::word("groupBy", "one line per level of this axis").choices(axisNames).optional())
+                                      .add(Key::word("along", "the lines connect the levels of this axis").choices(axisNames).optional()),
+                                  p.dict("plot"), "plot");
+        if (q.has("groupBy"))
+        {
+            study.groupBy = q.word("groupBy");
+        }
+        if (q.has("along"))
+        {
+            study.along = q.word("along");
+        }
+    }
+    return study;
+}
+
+std::size_t StudyDefinition::axisIndex(const std::string& name) const
+{
+    for (std::size_t i = 0; i < axes.size(); ++i)
+    {
+        if (axes[i].name == name)
+        {
+            return i;
+        }
+    }
+    return 0;
+}
+
+std::vector<StudyVariant> StudyDefinition::variants() const
+{
+    std::vector<StudyVariant> result;
+    std::vector<std::size_t> index(axes.size(), 0); // an odometer over the levels
+    bool done = false;
+    while (!done)
+    {
+        StudyVariant variant;
+        variant.particles = common.particles;
+        variant.solver = common.solver;
+        for (std::size_t a = 0; a < axes.size(); ++a)
+        {
+            const StudyLevel& level = axes[a].levels[index[a]];
+            variant.name += (a ? "_" : "") + level.name;
+            variant.levels.push_back(level.name);
+            variant.particles.insert(variant.particles.end(), level.particles.begin(), level.particles.end());
+            variant.solver.insert(variant.solver.end(), level.solver.begin(), level.solver.end());
+        }
+        result.push_back(variant);
+        done = true;
+        for (std::size_t a = axes.size(); a-- > 0;)
+        {
+            if (++index[a] < axes[a].levels.size())
+            {
+                done = false;
+                break;
+            }
+            index[a] = 0;
+        }
+    }
+    // Variants that others are compared with run first.
+    std::stable_partition(result.begin(), result.end(), [&](const StudyVariant& v) {
+        return std::any_of(metrics.begin(), metrics.end(),
+                           [&](const StudyMetric& m) { return m.variant == v.name; });
+    });
+    return result;
+}
+
+} // namespace sph

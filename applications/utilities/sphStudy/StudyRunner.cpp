@@ -1,0 +1,401 @@
+#include "StudyRunner.hpp"
+
+#include "core/InputError.hpp"
+#include "io/AtomicFile.hpp"
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+extern char** environ;
+
+namespace pt = boost::property_tree;
+
+namespace sph
+{
+
+namespace
+{
+
+const double notAvailable = std::numeric_limits<double>::quiet_NaN();
+
+// Runs `program args...` with output to `log`; returns the exit code (128 + signal if killed).
+int runProgram(const std::filesystem::path& program, const std::vector<std::string>& args,
+               const std::filesystem::path& log)
+{
+    std::vector<std::string> words{program.string()};
+    words.insert(words.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& word : words)
+    {
+        argv.push_back(word.data());
+    }
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    pid_t child = 0;
+    const int error = posix_spawn(&child, program.c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (error != 0)
+    {
+        throw InputError("sphStudy: cannot start '" + program.string() + "'",
+                         {"It is looked for next to sphStudy; rebuild sphSolid."});
+    }
+    int status = 0;
+    waitpid(child, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+// The first line of an error message in a log (the line after the banner).
+std::string firstError(const std::filesystem::path& log)
+{
+    std::ifstream in(log);
+    std::string line;
+    bool next = false;
+    while (std::getline(in, line))
+    {
+        if (next && !line.empty())
+        {
+            return line;
+        }
+        next = line.rfind("--> ", 0) == 0;
+    }
+    return "see " + log.string();
+}
+
+void copyCase(const std::filesystem::path& from, const std::filesystem::path& to)
+{
+    std::filesystem::create_directories(to);
+    for (const char* folder : {"system", "constant"})
+    {
+        std::filesystem::copy(from / folder, to / folder, std::filesystem::copy_options::recursive);
+    }
+    std::error_code ec;
+    std::filesystem::remove(to / "constant" / "particles.vtu", ec);
+}
+
+double median(std::vector<double> values)
+{
+    if (values.empty())
+    {
+        return notAvailable;
+    }
+    std::sort(values.begin(), values.end());
+    return values[values.size() / 2];
+}
+
+// A gnuplot table: the columns by name (first: time).
+struct Table
+{
+    std::vector<std::string> names;
+    std::vector<std::vector<double>> columns;
+
+    static Table read(const std::filesystem::path& file)
+    {
+        std::ifstream in(file);
+        if (!in)
+        {
+            throw std::runtime_error("cannot read " + file.string());
+        }
+        Table table;
+        std::string line;
+        while (std::getline(in, line))
+        {
+            std::istringstream words(line);
+            if (line.rfind("#", 0) == 0)
+            {
+                std::string word;
+                words >> word;
+                while (words >> word)
+                {
+                    table.names.push_back(word);
+                }
+                continue;
+            }
+            std::vector<double> row;
+            double value;
+            while (words >> value)
+            {
+                row.push_back(value);
+            }
+            if (row.empty())
+            {
+                continue;
+            }
+            table.columns.resize(std::max(table.columns.size(), row.size()));
+            for (std::size_t c = 0; c < row.size(); ++c)
+            {
+                table.columns[c].push_back(row[c]);
+            }
+        }
+        return table;
+    }
+
+    // A column by name or 1-based number.
+    const std::vector<double>& column(const std::string& name) const
+    {
+        for (std::size_t c = 0; c < names.size() && c < columns.size(); ++c)
+        {
+            if (names[c] == name)
+            {
+                return columns[c];
+            }
+        }
+        char* end = nullptr;
+        const long number = std::strtol(name.c_str(), &end, 10);
+        if (end && *end == '\0' && number >= 1 && static_cast<std::size_t>(number) <= columns.size())
+        {
+            return columns[static_cast<std::size_t>(number - 1)];
+        }
+        throw std::runtime_error("no column '" + name + "'");
+    }
+};
+
+// max or rms of (value - reference interpolated at the value's times) over the common time
+// range, relative to max |reference|.
+double difference(const std::vector<double>& time, const std::vector<double>& value,
+                  const std::vector<double>& referenceTime, const std::vector<double>& reference,
+                  const std::string& norm)
+{
+    double scale = 0.0;
+    for (double r : reference)
+    {
+        scale = std::max(scale, std::abs(r));
+    }
+    double worst = 0.0;
+    double squares = 0.0;
+    std::size_t count = 0;
+    std::size_t j = 0;
+    for (std::size_t i = 0; i < time.size() && i < value.size(); ++i)
+    {
+        const double t = time[i];
+        if (referenceTime.empty() || t < referenceTime.front() || t > referenceTime.back())
+        {
+            continue;
+        }
+        while (j + 1 < referenceTime.size() && referenceTime[j + 1] < t)
+        {
+            ++j;
+        }
+        double r = reference[j];
+        if (j + 1 < referenceTime.size() && referenceTime[j + 1] > referenceTime[j])
+        {
+            const double s = (t - referenceTime[j]) / (referenceTime[j + 1] - referenceTime[j]);
+            r = (1.0 - s) * reference[j] + s * reference[j + 1];
+        }
+        const double d = std::abs(value[i] - r);
+        worst = std::max(worst, d);
+        squares += d * d;
+        ++count;
+    }
+    if (count == 0 || scale == 0.0)
+    {
+        return notAvailable;
+    }
+    return (norm == "rms" ? std::sqrt(squares / static_cast<double>(count)) : worst) / scale;
+}
+
+} // namespace
+
+StudyRunner::StudyRunner(std::filesystem::path caseDir, const StudyDefinition& study,
+                         std::filesystem::path binDir)
+    : caseDir_(std::move(caseDir)), study_(study), binDir_(std::move(binDir)),
+      studyDir_(caseDir_ / "postProcessing" / "study")
+{
+}
+
+std::filesystem::path StudyRunner::variantDir(const std::string& name) const
+{
+    return studyDir_ / "runs" / name;
+}
+
+std::vector<VariantResult> StudyRunner::run()
+{
+    const auto variants = study_.variants();
+    std::vector<VariantResult> results;
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < variants.size(); ++i)
+    {
+        std::cout << "[" << i + 1 << "/" << variants.size() << "] " << variants[i].name << ": "
+                  << std::flush;
+        VariantResult result = runVariant(variants[i]);
+        computeMetrics(result);
+        results.push_back(result);
+        std::ostringstream line;
+        line.precision(4);
+        line << (result.reused ? "done earlier, " : "") << result.status;
+        if (result.status == "finished" || result.status == "failed")
+        {
+            line << ", " << result.wallSeconds << " s, " << result.usPerParticleStep
+                 << " us/particle-step";
+            for (const auto& metric : study_.metrics)
+            {
+                line << ", " << metric.name << " " << result.metrics[metric.name];
+            }
+        }
+        if (!result.failure.empty())
+        {
+            line << " (" << result.failure.substr(0, 120) << ")";
+        }
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        line << "  [study " << static_cast<long>(elapsed) << " s]";
+        std::cout << line.str() << std::endl;
+    }
+    return results;
+}
+
+VariantResult StudyRunner::runVariant(const StudyVariant& variant)
+{
+    VariantResult result;
+    result.variant = variant;
+    const std::filesystem::path dir = variantDir(variant.name);
+    const std::filesystem::path record = dir / "study.json";
+    if (std::filesystem::exists(record))
+    {
+        pt::ptree tree;
+        pt::read_json(record.string(), tree);
+        result.status = tree.get<std::string>("status");
+        result.failure = tree.get<std::string>("failure", "");
+        result.particles = tree.get<double>("particles", 0.0);
+        result.steps = tree.get<double>("steps", 0.0);
+        result.wallSeconds = tree.get<double>("wallSeconds", notAvailable);
+        result.usPerParticleStep = tree.get<double>("usPerParticleStep", notAvailable);
+        result.peakMemoryMB = tree.get<double>("peakMemoryMB", notAvailable);
+        result.reused = true;
+        return result;
+    }
+    std::error_code ec;
+    std::filesystem::remove_all(dir, ec);
+    copyCase(caseDir_, dir);
+
+    std::vector<std::string> args{"-case", dir.string()};
+    for (const auto& set : variant.particles)
+    {
+        args.push_back("-set");
+        args.push_back(set);
+    }
+    if (runProgram(binDir_ / "sphParticles", args, dir / "log.sphParticles") != 0)
+    {
+        result.status = "failed";
+        result.failure = "sphParticles: " + firstError(dir / "log.sphParticles");
+    }
+    else
+    {
+        std::vector<std::string> solverArgs{"-case", dir.string()};
+        if (study_.threads > 0)
+        {
+            solverArgs.push_back("-threads");
+            solverArgs.push_back(std::to_string(study_.threads));
+        }
+        for (const auto& set : variant.solver)
+        {
+            solverArgs.push_back("-set");
+            solverArgs.push_back(set);
+        }
+        std::vector<double> walls;
+        std::vector<double> rates;
+        for (long r = 0; r < study_.repeats; ++r)
+        {
+            const int code = runProgram(binDir_ / "sphSolid", solverArgs, dir / "log.sphSolid");
+            const std::filesystem::path summary = dir / "postProcessing" / "summary.json";
+            if (code == 1 || !std::filesystem::exists(summary))
+            {
+                result.status = "failed";
+                result.failure = "input error: " + firstError(dir / "log.sphSolid");
+                break;
+            }
+            pt::ptree tree;
+            pt::read_json(summary.string(), tree);
+            result.status = tree.get<std::string>("status");
+            result.failure = tree.get<std::string>("failure", "");
+            result.particles = tree.get<double>("particles");
+            result.steps = tree.get<double>("steps");
+            result.peakMemoryMB = std::max(result.peakMemoryMB, tree.get<double>("peakMemoryMB"));
+            walls.push_back(tree.get<double>("wallSeconds"));
+            rates.push_back(tree.get<double>("computeParticleStepsPerSecond"));
+            if (result.status != "finished")
+            {
+                break; // a failure repeats itself
+            }
+        }
+        result.wallSeconds = median(walls);
+        const double rate = median(rates);
+        result.usPerParticleStep = rate > 0.0 ? 1e6 / rate : notAvailable;
+        const auto newline = result.failure.find('\n');
+        if (newline != std::string::npos)
+        {
+            result.failure.resize(newline);
+        }
+    }
+    pt::ptree tree;
+    tree.put("variant", variant.name);
+    tree.put("status", result.status);
+    tree.put("failure", result.failure);
+    tree.put("particles", result.particles);
+    tree.put("steps", result.steps);
+    tree.put("wallSeconds", result.wallSeconds);
+    tree.put("usPerParticleStep", result.usPerParticleStep);
+    tree.put("peakMemoryMB", result.peakMemoryMB);
+    std::ostringstream text;
+    pt::write_json(text, tree);
+    writeTextAtomically(record, text.str());
+    return result;
+}
+
+void StudyRunner::computeMetrics(VariantResult& result) const
+{
+    const std::filesystem::path dir = variantDir(result.variant.name);
+    for (const StudyMetric& metric : study_.metrics)
+    {
+        double value = notAvailable;
+        try
+        {
+            if (metric.type == "exactSolution" || metric.type == "summary")
+            {
+                pt::ptree tree;
+                pt::read_json((dir / "postProcessing" / "summary.json").string(), tree);
+                value = tree.get<double>(pt::ptree::path_type(metric.value, '/'));
+            }
+            else
+            {
+                const Table own = Table::read(dir / metric.file);
+                Table reference;
+                std::string referenceColumn = metric.column;
+                if (metric.type == "referenceVariant")
+                {
+                    reference = Table::read(variantDir(metric.variant) / metric.file);
+                }
+                else
+                {
+                    reference = Table::read(caseDir_ / metric.reference);
+                    referenceColumn = metric.referenceColumn;
+                }
+                value = difference(own.columns.at(0), own.column(metric.column),
+                                   reference.columns.at(0), reference.column(referenceColumn),
+                                   metric.norm);
+            }
+        }
+        catch (const std::exception&)
+        {
+            value = notAvailable; // e.g. a run that failed before writing its tables
+        }
+        result.metrics[metric.name] = value;
+    }
+}
+
+} // namespace sph

@@ -1,0 +1,72 @@
+// sphStudy: speed against error for any case. Reads system/studyDict (see StudyDefinition.hpp
+// and README.md), runs every variant of the case in postProcessing/study/runs/<variant>/,
+// and writes postProcessing/study/results.csv, results.md, errorVsTime.png and
+// errorVsParticles.png. An interrupted study resumes: finished variants are not run again
+// (delete postProcessing/study/runs/<variant> to run one again).
+#include "StudyReport.hpp"
+#include "StudyRunner.hpp"
+
+#include "core/Application.hpp"
+#include "core/CaseDictionaries.hpp"
+#include "core/CommandLine.hpp"
+#include "core/LibraryLoader.hpp"
+
+#include <iostream>
+
+namespace
+{
+
+int study(int argc, char** argv)
+{
+    sph::CommandLine commandLine(
+        "sphStudy",
+        "runs the variants of system/studyDict (e.g. resolution x scheme x Courant number) on "
+        "a case and tabulates error against cost: postProcessing/study/results.csv, results.md, "
+        "errorVsTime.png, errorVsParticles.png. Finished variants are kept: an interrupted study "
+        "resumes. -dryRun lists the variants without running them.");
+    commandLine.enableModelOptions(false, true, true);
+    if (!commandLine.parse(argc, argv))
+    {
+        return 0;
+    }
+    sph::CaseDictionaries dicts(commandLine.caseDir());
+    dicts.read({"studyDict"});
+    dicts.applySets(commandLine.sets());
+    const sph::StudyDefinition definition = sph::StudyDefinition::read(dicts.get("studyDict"));
+    const auto variants = definition.variants();
+    std::cout << "sphStudy " << sph::projectVersion() << ": " << variants.size() << " variants of "
+              << std::filesystem::absolute(commandLine.caseDir()).lexically_normal().string()
+              << ", " << definition.repeats << " run(s) each\n";
+    if (commandLine.dryRun())
+    {
+        for (const auto& variant : variants)
+        {
+            std::cout << "  " << variant.name << ":  sphParticles";
+            for (const auto& set : variant.particles)
+            {
+                std::cout << " -set " << set;
+            }
+            std::cout << ";  sphSolid";
+            for (const auto& set : variant.solver)
+            {
+                std::cout << " -set " << set;
+            }
+            std::cout << "\n";
+        }
+        return 0;
+    }
+    const std::filesystem::path binDir = sph::LibraryLoader::libraryDirectory() / ".." / "bin";
+    sph::StudyRunner runner(commandLine.caseDir(), definition, binDir.lexically_normal());
+    const auto results = runner.run();
+    sph::writeStudyReport(runner.studyDir(), definition, results);
+    std::cout << "Wrote " << (runner.studyDir() / "results.csv").string() << ", results.md and "
+              << "the plots errorVsTime.png, errorVsParticles.png\n";
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    return sph::guardedMain([&] { return study(argc, argv); });
+}
