@@ -155,11 +155,17 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
     {
         // 1. Updated-Lagrangian: move the reference configuration when due.
         ForceStatus status;
-        reference_->updateIfDue(step_, particles_, status);
+        const bool moved = reference_->updateIfDue(step_, particles_, status);
         if (!status.ok())
         {
             fail(status, "moving the reference configuration");
         }
+        // x is the reference configuration bitwise (f = I exactly) when the reference was just
+        // moved here — or, at the first level of a run (fresh or restarted), if the arrays say
+        // so (an initial displacement makes x differ from X = x^r).
+        const bool atReference =
+            moved || (step_ == firstStep && reference_->reference().updateStep == step_ &&
+                      reference_->reference().x == particles_.x);
 
         // 2. Internal forces, F and P at x^n (into spare buffers: the last good F, P survive).
         const bool progress = log.progressDue();
@@ -169,8 +175,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
             wantEnergy = wantEnergy || object->needsStrainEnergy(step_, time_);
         }
         ForceInput<D> in{particles_.x, particles_.V0, particles_.body, particles_.bodies,
-                         materials_, reference_->reference(),
-                         reference_->reference().updateStep == step_};
+                         materials_, reference_->reference(), atReference};
         ForceOutput<D> out{acceleration_, nextF_, nextP_};
         status = scheme_->computeForces(in, out, wantEnergy);
         if (!status.ok())

@@ -4,6 +4,7 @@
 
 #include "core/InputError.hpp"
 #include "core/Suggest.hpp"
+#include "particles/fields/Fields.hpp"
 #include "particles/regions/Region.hpp"
 
 #include <algorithm>
@@ -23,18 +24,16 @@ Schema bodySchema()
                                    "rho ...; }"))
         .add(Key::vector("velocity", "initial velocity of the whole body [m/s]").defaultValue("0"))
         .add(Key::dict("initialVelocity", "initial velocities by region: name { region { ... }; "
-                                          "velocity (...); }, applied in order after 'velocity'")
+                                          "type uniform | rotation | cantileverMode; ... }, "
+                                          "applied in order after 'velocity'")
+                 .optional())
+        .add(Key::dict("initialDisplacement", "initial displacements x = X + u by region: name { "
+                                              "region { ... }; type affine | random | "
+                                              "checkerboard; ... }, added in order")
                  .optional())
         .add(Key::dict("constraints", "fixed particles by region: name { type fixed; region { "
                                       "... }; }")
                  .optional());
-}
-
-Schema initialVelocitySchema()
-{
-    return Schema()
-        .add(Key::dict("region", "which particles (by initial position)"))
-        .add(Key::vector("velocity", "their initial velocity [m/s]"));
 }
 
 Schema constraintSchema()
@@ -42,6 +41,45 @@ Schema constraintSchema()
     return Schema()
         .add(Key::word("type", "fixed: position held, velocity zero").choices({"fixed"}))
         .add(Key::dict("region", "which particles (by initial position)"));
+}
+
+// A field entry { region { ... }; type NAME; ...the field's keys }: validated against the
+// field type's schema plus `region`; `type` may be left out when there is a default.
+template <class Field>
+std::pair<std::unique_ptr<Field>, Params> selectField(const Dictionary& entry,
+                                                      const std::string& defaultType, int D)
+{
+    std::string type = defaultType;
+    SourceLocation where = entry.location();
+    if (const Entry* typeEntry = entry.find("type"))
+    {
+        if (typeEntry->isDict() || typeEntry->items().size() != 1 ||
+            typeEntry->items()[0].kind() != Item::Kind::Word)
+        {
+            throw InputError(typeEntry->valueLocation(), "'type' in '" + entry.displayName() + "' must be one word");
+        }
+        type = typeEntry->items()[0].text();
+        where = typeEntry->items()[0].location();
+    }
+    else if (type.empty())
+    {
+        throw InputError(entry.location(), "missing required key 'type' in '" + entry.displayName() + "'",
+                         {"Valid " + std::string(Field::family) + " types: " +
+                          joinSorted(Registry<Field>::names())});
+    }
+    const ModelRecord* record = Registry<Field>::find(type);
+    if (!record)
+    {
+        throw unknownModelError(Field::family, type, where, D);
+    }
+    Schema schema = record->schema();
+    schema.add(Key::dict("region", "which particles (by initial position)"));
+    ValidationContext context;
+    context.dimension = D;
+    context.label = type;
+    Params params = schema.validate(entry, context);
+    auto field = Registry<Field>::create(type, params, {});
+    return {std::move(field), std::move(params)};
 }
 
 Params validateNamed(const Schema& schema, const Dictionary& dict, const std::string& label, int D,
@@ -233,6 +271,24 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
             }
             return chosen;
         };
+        if (p.has("initialDisplacement"))
+        {
+            for (const Entry& item : p.dict("initialDisplacement").entries())
+            {
+                if (!item.isDict())
+                {
+                    throw InputError(item.keyLocation(), "'" + item.key() +
+                                                             "' in initialDisplacement must be a "
+                                                             "dictionary { region { ... }; type "
+                                                             "...; }");
+                }
+                const auto [field, q] = selectField<DisplacementField<D>>(item.dict(), "", D);
+                for (const std::size_t a : selected(item.dict(), q))
+                {
+                    particles_.x[a] += field->displacement(particles_.X[a], a);
+                }
+            }
+        }
         if (p.has("initialVelocity"))
         {
             for (const Entry& item : p.dict("initialVelocity").entries())
@@ -244,12 +300,10 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
                                                              "dictionary { region { ... }; "
                                                              "velocity (...); }");
                 }
-                const Params q = validateNamed(initialVelocitySchema(), item.dict(),
-                                               "an initialVelocity entry", D, true);
-                const Vec<D> value = toVec<D>(q.vector("velocity"));
+                const auto [field, q] = selectField<VelocityField<D>>(item.dict(), "uniform", D);
                 for (const std::size_t a : selected(item.dict(), q))
                 {
-                    particles_.v[a] = value;
+                    particles_.v[a] = field->velocity(particles_.X[a]);
                 }
             }
         }

@@ -75,6 +75,10 @@ public:
         const double scale = std::abs(reference_) > 0.0 ? std::abs(reference_) : 1.0;
         drift_ = (total - reference_) / scale;
         maxDrift_ = std::max(maxDrift_, std::abs(drift_));
+        if (kinetic > 0.0)
+        {
+            maxStrainRatio_ = std::max(maxStrainRatio_, state.strainEnergy / kinetic);
+        }
         std::vector<double> row{kinetic, state.strainEnergy, state.externalWork,
                                 state.contactWork, total, drift_};
         Vec<D> momentum = Vec<D>::Zero();
@@ -108,7 +112,7 @@ public:
     std::string summary() const override { return "energy"; }
     std::map<std::string, double> results() const override
     {
-        return {{"finalDrift", drift_}, {"maxDrift", maxDrift_}};
+        return {{"finalDrift", drift_}, {"maxDrift", maxDrift_}, {"maxStrainOverKinetic", maxStrainRatio_}};
     }
     void saveState(std::map<std::string, double>& state) const override
     {
@@ -116,6 +120,7 @@ public:
         state["reference"] = reference_;
         state["haveReference"] = haveReference_ ? 1.0 : 0.0;
         state["maxDrift"] = maxDrift_;
+        state["maxStrainRatio"] = maxStrainRatio_;
     }
     void restoreState(const std::map<std::string, double>& state) override
     {
@@ -123,6 +128,7 @@ public:
         reference_ = state.at("reference");
         haveReference_ = state.at("haveReference") != 0.0;
         maxDrift_ = state.at("maxDrift");
+        maxStrainRatio_ = state.at("maxStrainRatio");
     }
 
 private:
@@ -138,6 +144,7 @@ private:
     bool haveReference_ = false;
     double drift_ = 0.0;
     double maxDrift_ = 0.0;
+    double maxStrainRatio_ = 0.0; // largest strain / kinetic energy
 };
 
 SPH_REGISTER_DIM_MODEL(FunctionObject, Energy, "energy");

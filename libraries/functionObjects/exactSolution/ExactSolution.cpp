@@ -21,6 +21,7 @@
 // consecutive downward zero crossings; the exact mean is 0), which a mean over the exact
 // period would bias by the period error.
 #include "functionObjects/FunctionObjectModel.hpp"
+#include "functionObjects/PeriodTracker.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -198,12 +199,12 @@ public:
         maxError_ = std::max(maxError_, std::abs(error));
         sumSquares_ += error * error;
         ++samples_;
-        trackPeriods(state.time, u);
+        periods_.add(state.time, u);
         if (this->rowDue(state.time, state.deltaT))
         {
             this->writeRow(state.time, state.deltaT,
                            {u, exact, error, state.velocity[probe_][0],
-                            solution_->velocity(xi_, state.time), periodMean_});
+                            solution_->velocity(xi_, state.time), periods_.lastMean()});
         }
     }
 
@@ -216,14 +217,15 @@ public:
             this->name() + ": displacement error Linf " + number(maxError_) + " m (" +
                 number(maxError_ / amplitude) + " of the amplitude), RMS " + number(rms) + " m (" +
                 number(rms / amplitude) + ")"};
-        if (periods_ > 0)
+        if (periods_.periods() > 0)
         {
-            lines.push_back(this->name() + ": " + std::to_string(periods_) +
-                            " numerical periods, the last " + number(periodLength_) + " s (" +
-                            number(100.0 * (periodLength_ / solution_->period() - 1.0)) +
-                            " % from 4L/c); mean displacement over it " + number(periodMean_) +
-                            " m (" + number(periodMean_ / amplitude) +
-                            " of the amplitude), largest |mean| " + number(maxPeriodMean_ / amplitude));
+            lines.push_back(this->name() + ": " + std::to_string(periods_.periods()) +
+                            " numerical periods, the last " + number(periods_.lastPeriod()) + " s (" +
+                            number(100.0 * (periods_.lastPeriod() / solution_->period() - 1.0)) +
+                            " % from 4L/c); mean displacement over it " + number(periods_.lastMean()) +
+                            " m (" + number(periods_.lastMean() / amplitude) +
+                            " of the amplitude), largest |mean| " +
+                            number(periods_.maxAbsMean() / amplitude));
         }
         return lines;
     }
@@ -237,10 +239,10 @@ public:
                 {"relativeLinfError", maxError_ / amplitude},
                 {"relativeRmsError", rms / amplitude},
                 {"exactPeriod", solution_->period()},
-                {"periods", static_cast<double>(periods_)},
-                {"lastPeriod", periodLength_},
-                {"relativePeriodMean", periodMean_ / amplitude},
-                {"relativeMaxPeriodMean", maxPeriodMean_ / amplitude}};
+                {"periods", static_cast<double>(periods_.periods())},
+                {"lastPeriod", periods_.lastPeriod()},
+                {"relativePeriodMean", periods_.lastMean() / amplitude},
+                {"relativeMaxPeriodMean", periods_.maxAbsMean() / amplitude}};
     }
     std::string summary() const override { return "exactSolution(fixedFreeBar, " + description_ + ")"; }
 
@@ -250,15 +252,7 @@ public:
         state["maxError"] = maxError_;
         state["sumSquares"] = sumSquares_;
         state["samples"] = static_cast<double>(samples_);
-        state["previousTime"] = previousTime_;
-        state["previousU"] = previousU_;
-        state["havePrevious"] = havePrevious_ ? 1.0 : 0.0;
-        state["lastCrossing"] = lastCrossing_;
-        state["integral"] = integral_;
-        state["periodMean"] = periodMean_;
-        state["periodLength"] = periodLength_;
-        state["maxPeriodMean"] = maxPeriodMean_;
-        state["periods"] = static_cast<double>(periods_);
+        periods_.save(state, "periods");
     }
     void restoreState(const std::map<std::string, double>& state) override
     {
@@ -266,49 +260,10 @@ public:
         maxError_ = state.at("maxError");
         sumSquares_ = state.at("sumSquares");
         samples_ = static_cast<long>(state.at("samples"));
-        previousTime_ = state.at("previousTime");
-        previousU_ = state.at("previousU");
-        havePrevious_ = state.at("havePrevious") != 0.0;
-        lastCrossing_ = state.at("lastCrossing");
-        integral_ = state.at("integral");
-        periodMean_ = state.at("periodMean");
-        periodLength_ = state.at("periodLength");
-        maxPeriodMean_ = state.at("maxPeriodMean");
-        periods_ = static_cast<long>(state.at("periods"));
+        periods_.restore(state, "periods");
     }
 
 private:
-    // Mean of u over each complete numerical period, between downward zero crossings
-    // (trapezoidal rule, split at the interpolated crossing).
-    void trackPeriods(double time, double u)
-    {
-        if (havePrevious_ && time > previousTime_)
-        {
-            if (previousU_ > 0.0 && u <= 0.0)
-            {
-                const double crossing =
-                    previousTime_ + previousU_ * (time - previousTime_) / (previousU_ - u);
-                integral_ += 0.5 * previousU_ * (crossing - previousTime_);
-                if (lastCrossing_ >= 0.0)
-                {
-                    periodLength_ = crossing - lastCrossing_;
-                    periodMean_ = integral_ / periodLength_;
-                    maxPeriodMean_ = std::max(maxPeriodMean_, std::abs(periodMean_));
-                    ++periods_;
-                }
-                lastCrossing_ = crossing;
-                integral_ = 0.5 * u * (time - crossing);
-            }
-            else
-            {
-                integral_ += 0.5 * (previousU_ + u) * (time - previousTime_);
-            }
-        }
-        previousTime_ = time;
-        previousU_ = u;
-        havePrevious_ = true;
-    }
-
     static std::string number(double value)
     {
         std::ostringstream out;
@@ -324,15 +279,7 @@ private:
     double maxError_ = 0.0;
     double sumSquares_ = 0.0;
     long samples_ = 0;
-    double previousTime_ = 0.0;
-    double previousU_ = 0.0;
-    bool havePrevious_ = false;
-    double lastCrossing_ = -1.0;
-    double integral_ = 0.0;
-    double periodMean_ = 0.0;
-    double periodLength_ = 0.0;
-    double maxPeriodMean_ = 0.0;
-    long periods_ = 0;
+    PeriodTracker periods_; // creep: the mean of u over each numerical period
 };
 
 SPH_REGISTER_DIM_MODEL_FOR(FunctionObject, ExactSolution, "exactSolution", 1);

@@ -79,6 +79,11 @@ public:
                 worst = a;
             }
         }
+        if (!haveFirst_)
+        {
+            first_ = indicator;
+            haveFirst_ = true;
+        }
         last_ = indicator;
         maxIndicator_ = std::max(maxIndicator_, indicator);
         minDistanceRatio_ = std::min(minDistanceRatio_, std::sqrt(minDistance2) / spacing_);
@@ -98,8 +103,10 @@ public:
     }
     std::map<std::string, double> results() const override
     {
-        return {{"finalIndicator", last_},
+        return {{"firstIndicator", first_},
+                {"finalIndicator", last_},
                 {"maxIndicator", maxIndicator_},
+                {"indicatorGrowth", first_ > 0.0 ? maxIndicator_ / first_ : 0.0},
                 {"minDistanceRatio", minDistanceRatio_}};
     }
     std::string summary() const override { return "stabilityMonitor"; }
@@ -107,6 +114,8 @@ public:
     {
         FunctionObjectModel<D>::saveState(state);
         state["last"] = last_;
+        state["first"] = first_;
+        state["haveFirst"] = haveFirst_ ? 1.0 : 0.0;
         state["maxIndicator"] = maxIndicator_;
         state["minDistanceRatio"] = minDistanceRatio_;
     }
@@ -114,6 +123,8 @@ public:
     {
         FunctionObjectModel<D>::restoreState(state);
         last_ = state.at("last");
+        first_ = state.at("first");
+        haveFirst_ = state.at("haveFirst") != 0.0;
         maxIndicator_ = state.at("maxIndicator");
         minDistanceRatio_ = state.at("minDistanceRatio");
     }
@@ -129,6 +140,8 @@ private:
     }
 
     double spacing_;
+    double first_ = 0.0;
+    bool haveFirst_ = false;
     double last_ = 0.0;
     double maxIndicator_ = 0.0;
     double minDistanceRatio_ = std::numeric_limits<double>::max();
