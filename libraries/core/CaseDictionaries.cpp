@@ -12,10 +12,11 @@ namespace
 
 const std::map<std::string, std::string>& knownFiles()
 {
-    static const std::map<std::string, std::string> files{
-        {"controlDict", "system/controlDict"},     {"sphSchemes", "system/sphSchemes"},
-        {"particlesDict", "system/particlesDict"}, {"studyDict", "system/studyDict"},
-        {"bodies", "constant/bodies"}};
+    static const std::map<std::string, std::string> files{{"controlDict", "system/controlDict"},
+                                                          {"sphSchemes", "system/sphSchemes"},
+                                                          {"particlesDict", "system/particlesDict"},
+                                                          {"studyDict", "system/studyDict"},
+                                                          {"bodies", "constant/bodies"}};
     return files;
 }
 
@@ -41,9 +42,7 @@ std::vector<std::string> split(const std::string& path)
 
 } // namespace
 
-CaseDictionaries::CaseDictionaries(std::filesystem::path caseDir) : caseDir_(std::move(caseDir))
-{
-}
+CaseDictionaries::CaseDictionaries(std::filesystem::path caseDir) : caseDir_(std::move(caseDir)) {}
 
 std::string CaseDictionaries::relativePath(const std::string& name)
 {
@@ -66,7 +65,8 @@ std::string CaseDictionaries::caseName() const
 void CaseDictionaries::read(const std::vector<std::string>& required,
                             const std::vector<std::string>& optional)
 {
-    const auto readOne = [&](const std::string& name, bool mustExist) {
+    const auto readOne = [&](const std::string& name, bool mustExist)
+    {
         const std::string relative = relativePath(name);
         const std::filesystem::path path = caseDir_ / relative;
         if (!std::filesystem::exists(path))
@@ -111,7 +111,8 @@ void CaseDictionaries::applySets(const std::vector<std::string>& sets)
     {
         const std::string line = "-set " + argument;
         auto source = std::make_shared<const SourceText>("command line", line);
-        const auto at = [&](std::size_t offset, std::size_t length) {
+        const auto at = [&](std::size_t offset, std::size_t length)
+        {
             return SourceLocation{source, 1, static_cast<int>(5 + offset + 1),
                                   static_cast<int>(std::max<std::size_t>(1, length))};
         };
@@ -131,8 +132,29 @@ void CaseDictionaries::applySets(const std::vector<std::string>& sets)
                 throw InputError(at(0, path.size()), "empty key name in -set path '" + path + "'");
             }
         }
-        std::vector<Item> items =
-            DictionaryParser::parseValue(source, valueText, static_cast<int>(5 + equals + 2));
+        // A value in braces replaces a whole sub-dictionary: -set 'material={ type X; ... }'.
+        const std::size_t open = valueText.find_first_not_of(" \t");
+        const std::size_t close = valueText.find_last_not_of(" \t");
+        const bool isDictValue = open != std::string::npos && valueText[open] == '{';
+        if (isDictValue && valueText[close] != '}')
+        {
+            throw InputError(
+                at(equals + 1 + open, 1), "-set: the '{' of this value is not closed",
+                {"Write -set 'path.to.dict={ key value; ... }' (quote it for the shell)."});
+        }
+        std::vector<Item> items;
+        std::unique_ptr<Dictionary> dictValue;
+        if (isDictValue)
+        {
+            dictValue = DictionaryParser::parseDictionaryValue(
+                source, valueText.substr(open + 1, close - open - 1),
+                static_cast<int>(5 + equals + 2 + open + 1), parts.back());
+        }
+        else
+        {
+            items =
+                DictionaryParser::parseValue(source, valueText, static_cast<int>(5 + equals + 2));
+        }
 
         // Which file?
         std::string file;
@@ -170,24 +192,24 @@ void CaseDictionaries::applySets(const std::vector<std::string>& sets)
                         topKeys.push_back(key);
                     }
                 }
-                std::vector<std::string> notes{
-                    "To add a new top-level key, prefix its file (" + joinSorted(fileNames) +
-                    "): -set controlDict." + argument};
+                std::vector<std::string> notes{"To add a new top-level key, prefix its file (" +
+                                               joinSorted(fileNames) + "): -set controlDict." +
+                                               argument};
                 const std::string hint = didYouMean(parts.front(), topKeys);
                 if (!hint.empty())
                 {
                     notes.insert(notes.begin(), hint);
                 }
-                throw InputError(at(0, parts.front().size()),
-                                 "-set: no case dictionary has a top-level key '" + parts.front() +
-                                     "'",
-                                 notes);
+                throw InputError(
+                    at(0, parts.front().size()),
+                    "-set: no case dictionary has a top-level key '" + parts.front() + "'", notes);
             }
             file = holders.front();
         }
 
         Dictionary* dict = files_.at(file).get();
-        std::size_t offset = path.size() - [&] {
+        std::size_t offset = path.size() - [&]
+        {
             std::size_t length = 0;
             for (std::size_t i = 0; i < parts.size(); ++i)
             {
@@ -209,23 +231,37 @@ void CaseDictionaries::applySets(const std::vector<std::string>& sets)
                 notes.push_back("'" + dict->displayName() + "' has: " + joinSorted(dict->keys()));
                 throw InputError(at(offset, parts[i].size()),
                                  entry ? "-set: '" + parts[i] + "' is not a dictionary"
-                                       : "-set: '" + dict->displayName() + "' has no sub-dictionary '" +
-                                             parts[i] + "'",
+                                       : "-set: '" + dict->displayName() +
+                                             "' has no sub-dictionary '" + parts[i] + "'",
                                  notes);
             }
             offset += parts[i].size() + 1;
             dict = &entry->dict();
         }
         const std::string& key = parts.back();
-        if (Entry* entry = dict->find(key))
+        Entry* entry = dict->find(key);
+        if (dictValue)
+        {
+            Entry replacement(key, at(offset, key.size()), std::move(dictValue));
+            if (entry)
+            {
+                *entry = std::move(replacement);
+            }
+            else
+            {
+                dict->add(std::move(replacement));
+            }
+        }
+        else if (entry)
         {
             if (entry->isDict())
             {
-                throw InputError(at(offset, key.size()),
-                                 "-set: '" + key + "' is a dictionary; set one of its keys",
-                                 {"For example -set " + path + "." +
-                                  (entry->dict().empty() ? "type" : entry->dict().keys().front()) +
-                                  "=..."});
+                throw InputError(
+                    at(offset, key.size()),
+                    "-set: '" + key + "' is a dictionary; set one of its keys",
+                    {"For example -set " + path + "." +
+                         (entry->dict().empty() ? "type" : entry->dict().keys().front()) + "=...",
+                     "or replace it whole: -set '" + path + "={ ... }'"});
             }
             entry->setItems(std::move(items));
         }

@@ -69,8 +69,8 @@ bool readNumber(const std::string& text, double& value)
 class Lexer
 {
 public:
-    Lexer(std::shared_ptr<const SourceText> source, std::string text, int line = 1,
-          int column = 1, std::string endName = "")
+    Lexer(std::shared_ptr<const SourceText> source, std::string text, int line = 1, int column = 1,
+          std::string endName = "")
         : source_(std::move(source)), text_(std::move(text)), line_(line), column_(column),
           endName_(std::move(endName))
     {
@@ -173,7 +173,8 @@ private:
             return token;
         }
         const char c = current();
-        const auto single = [&](Token::Kind kind) {
+        const auto single = [&](Token::Kind kind)
+        {
             token.kind = kind;
             token.text = std::string(1, c);
             advance();
@@ -370,8 +371,7 @@ private:
                 parseEntry(lexer, dict);
                 break;
             default:
-                throw InputError(token.where,
-                                 "expected a key, found " + describe(token),
+                throw InputError(token.where, "expected a key, found " + describe(token),
                                  {"An entry is 'key value;' or 'name { ... }'."});
             }
         }
@@ -475,10 +475,10 @@ private:
             {
                 const Token& inner = lexer.peek();
                 if (inner.kind == Token::Kind::End || inner.kind == Token::Kind::Semicolon ||
-                    inner.kind == Token::Kind::OpenBrace ||
-                    inner.kind == Token::Kind::CloseBrace)
+                    inner.kind == Token::Kind::OpenBrace || inner.kind == Token::Kind::CloseBrace)
                 {
-                    throw InputError(token.where, "unterminated '(': the list opened here has no ')'",
+                    throw InputError(token.where,
+                                     "unterminated '(': the list opened here has no ')'",
                                      {"Found " + describe(inner) + " before the closing ')'."});
                 }
                 appendItem(lexer, content, scope);
@@ -508,8 +508,8 @@ private:
         const Entry* entry = scope.lookupScoped(variable.text);
         if (!entry)
         {
-            std::vector<std::string> notes{
-                "A variable copies an entry defined earlier in this dictionary or an enclosing one."};
+            std::vector<std::string> notes{"A variable copies an entry defined earlier in this "
+                                           "dictionary or an enclosing one."};
             const std::string hint = didYouMean(variable.text, scope.visibleKeys());
             if (!hint.empty())
             {
@@ -526,7 +526,8 @@ private:
         if (source.isDict())
         {
             throw InputError(variable.where,
-                             "'$" + variable.text + "' is a dictionary and cannot be part of a value",
+                             "'$" + variable.text +
+                                 "' is a dictionary and cannot be part of a value",
                              {"Copy a dictionary with 'key $" + variable.text +
                               ";' or merge it with '$" + variable.text + ";'."});
         }
@@ -571,7 +572,8 @@ private:
         const Token file = lexer.take();
         if (file.kind != Token::Kind::String)
         {
-            throw InputError(file.where, "#include needs a quoted file name, found " + describe(file),
+            throw InputError(file.where,
+                             "#include needs a quoted file name, found " + describe(file),
                              {"Write #include \"fileName\" (relative to this file)."});
         }
         const std::filesystem::path here = path_.parent_path();
@@ -587,11 +589,12 @@ private:
                 {
                     chain += step + " -> ";
                 }
-                const std::string target = (std::filesystem::path(file.where.fileName()).parent_path() / file.text)
-                                               .lexically_normal()
-                                               .string();
-                throw InputError(file.where, "#include cycle: '" + file.text +
-                                                 "' is already being read",
+                const std::string target =
+                    (std::filesystem::path(file.where.fileName()).parent_path() / file.text)
+                        .lexically_normal()
+                        .string();
+                throw InputError(file.where,
+                                 "#include cycle: '" + file.text + "' is already being read",
                                  {"Include chain: " + chain + target});
             }
         }
@@ -659,6 +662,18 @@ std::vector<Item> DictionaryParser::parseValue(const std::shared_ptr<const Sourc
                          {"Write -set path.to.key=value."});
     }
     return items;
+}
+
+std::unique_ptr<Dictionary>
+DictionaryParser::parseDictionaryValue(const std::shared_ptr<const SourceText>& source,
+                                       const std::string& text, int firstColumn,
+                                       const std::string& name)
+{
+    Lexer lexer(source, text, 1, firstColumn, "the closing '}'");
+    auto dict = std::make_unique<Dictionary>(name, SourceLocation{source, 1, firstColumn, 1});
+    Parser parser(std::filesystem::current_path(), {});
+    parser.parseFile(lexer, *dict);
+    return dict;
 }
 
 } // namespace sph

@@ -30,6 +30,11 @@ public:
     // whole argument; the value starts at 1-based column `firstColumn` of its only line.
     static std::vector<Item> parseValue(const std::shared_ptr<const SourceText>& source,
                                         const std::string& text, int firstColumn);
+    // Parses the entries of a `-set key={ ... }` value: `text` is what lies between the braces,
+    // starting at 1-based column `firstColumn`.
+    static std::unique_ptr<Dictionary> parseDictionaryValue(
+        const std::shared_ptr<const SourceText>& source, const std::string& text, int firstColumn,
+        const std::string& name);
 };
 
 } // namespace sph

@@ -4,6 +4,7 @@
 //   min     | lower corner [m]     | required
 //   max     | upper corner [m]     | required
 //   spacing | particle spacing [m] | required
+#include "core/Format.hpp"
 #include "generators/Generator.hpp"
 
 #include <cmath>
@@ -11,8 +12,7 @@
 namespace sph
 {
 
-template <int D>
-class Box : public Generator<D>
+template <int D> class Box : public Generator<D>
 {
 public:
     static std::string description()
@@ -40,10 +40,10 @@ public:
             const double cells = (max_[d] - min_[d]) / spacing_;
             if (std::abs(cells - std::round(cells)) > 1e-6 * cells)
             {
-                p.fail("spacing", "box: the extent " + std::to_string(max_[d] - min_[d]) +
-                                      " m in direction " + std::to_string(d) +
-                                      " is not a whole number of spacings (" +
-                                      std::to_string(cells) + ")",
+                p.fail("spacing",
+                       "box: the extent " + formatNumber(max_[d] - min_[d]) + " m along " +
+                           "xyz"[d] + " is not a whole number of spacings (" + formatNumber(cells) +
+                           ")",
                        {"Choose max - min as a multiple of 'spacing' (particles sit at cell "
                         "centres so that their volumes tile the box)."});
             }
@@ -54,9 +54,11 @@ public:
         const Vec<D> origin = min_ + Vec<D>::Constant(0.5 * spacing_);
         const Vec<D> lower = min_;
         const Vec<D> upper = max_;
-        return clippedLattice<D>(origin, spacing_, lower, upper, [&](const Vec<D>& x) {
-            return (x.array() > lower.array()).all() && (x.array() < upper.array()).all();
-        });
+        return clippedLattice<D>(origin, spacing_, lower, upper,
+                                 [&](const Vec<D>& x) {
+                                     return (x.array() > lower.array()).all() &&
+                                            (x.array() < upper.array()).all();
+                                 });
     }
 
 private:

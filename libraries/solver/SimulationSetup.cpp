@@ -1,5 +1,6 @@
 // Building a Simulation from the case: particles, bodies (materials, initial velocities,
 // constraints), every selected model, the function objects and the reference configuration.
+#include "core/Format.hpp"
 #include "solver/Simulation.hpp"
 
 #include "core/InputError.hpp"
@@ -381,8 +382,8 @@ std::vector<std::string> Simulation<D>::describe() const
     out << "Case        " << dicts_.caseDir().string() << " (" << caseName_ << "), " << D
         << "D, " << particles_.size() << " particles, spacing " << spacing_ << " m";
     lines.push_back(out.str());
-    lines.push_back("Kernel      " + kernel_->name() + "(hOverDx=" + std::to_string(kernel_->hOverDx()) +
-                    ", h=" + std::to_string(kernel_->h()) + " m)");
+    lines.push_back("Kernel      " + kernel_->name() + "(hOverDx=" + formatNumber(kernel_->hOverDx()) +
+                    ", h=" + formatNumber(kernel_->h()) + " m)");
     lines.push_back("Formulation " + formulation_->summary());
     lines.push_back("Scheme      " + scheme_->summary());
     lines.push_back("Contact     " + contact_->summary());

@@ -16,6 +16,22 @@
 namespace
 {
 
+// The argument as a POSIX shell reads it back: plain when safe, else in single quotes.
+std::string shellQuoted(const std::string& argument)
+{
+    if (argument.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                   "0123456789._-+=/:,@%") == std::string::npos)
+    {
+        return argument;
+    }
+    std::string quoted = "'";
+    for (char c : argument)
+    {
+        quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    return quoted + "'";
+}
+
 int study(int argc, char** argv)
 {
     sph::CommandLine commandLine(
@@ -44,12 +60,12 @@ int study(int argc, char** argv)
             std::cout << "  " << variant.name << ":  sphParticles";
             for (const auto& set : variant.particles)
             {
-                std::cout << " -set " << set;
+                std::cout << " -set " << shellQuoted(set);
             }
             std::cout << ";  sphSolid";
             for (const auto& set : variant.solver)
             {
-                std::cout << " -set " << set;
+                std::cout << " -set " << shellQuoted(set);
             }
             std::cout << "\n";
         }

@@ -10,6 +10,7 @@
 // Keys:
 //   kappa | coefficient κ of eq. (37), a contact pressure [Pa]          | required
 //   pairs | which bodies may touch, e.g. ((ringA ringB)); () = every pair | ()
+#include "core/Format.hpp"
 #include "contact/Contact.hpp"
 #include "core/InputError.hpp"
 #include "core/Suggest.hpp"
@@ -79,7 +80,7 @@ public:
     std::size_t pairsSearched() const override { return pairsSearched_; }
     std::string summary() const override
     {
-        return "repulsion(kappa=" + std::to_string(kappa_) + " Pa)";
+        return "repulsion(kappa=" + formatNumber(kappa_) + " Pa)";
     }
 
     void apply(ContactState<D>& state, std::vector<Vec<D>>& deltaV) override

@@ -10,6 +10,7 @@
 //   conserved by the internal forces and the contact kick, changed by fixed particles and
 //   external forces (spec §10).
 // Keys: writeInterval (see FunctionObject.hpp).
+#include "core/Format.hpp"
 #include "functionObjects/FunctionObjectModel.hpp"
 
 #include <Eigen/Geometry>
@@ -19,8 +20,7 @@
 namespace sph
 {
 
-template <int D>
-class Energy : public FunctionObjectModel<D>
+template <int D> class Energy : public FunctionObjectModel<D>
 {
 public:
     static std::string description()
@@ -33,8 +33,8 @@ public:
     Energy(const Params& params, const typename FunctionObject<D>::Args& args)
         : FunctionObjectModel<D>(params, args)
     {
-        std::vector<std::string> columns{"kinetic", "strain", "external", "contact", "total",
-                                         "drift"};
+        std::vector<std::string> columns{"kinetic", "strain", "external",
+                                         "contact", "total",  "drift"};
         static const char* axes[3] = {"x", "y", "z"};
         for (int d = 0; d < D; ++d)
         {
@@ -51,7 +51,10 @@ public:
         this->setColumns(columns);
     }
 
-    bool needsStrainEnergy(long, double time) const override { return this->rowDue(time, lastDeltaT_); }
+    bool needsStrainEnergy(long, double time) const override
+    {
+        return this->rowDue(time, lastDeltaT_);
+    }
 
     void execute(const StepState<D>& state) override
     {
@@ -79,8 +82,8 @@ public:
         {
             maxStrainRatio_ = std::max(maxStrainRatio_, state.strainEnergy / kinetic);
         }
-        std::vector<double> row{kinetic, state.strainEnergy, state.externalWork,
-                                state.contactWork, total, drift_};
+        std::vector<double> row{
+            kinetic, state.strainEnergy, state.externalWork, state.contactWork, total, drift_};
         Vec<D> momentum = Vec<D>::Zero();
         Eigen::Vector3d angular = Eigen::Vector3d::Zero();
         for (std::size_t a = 0; a < p.size(); ++a)
@@ -106,13 +109,15 @@ public:
 
     std::vector<std::string> report() const override
     {
-        return {this->name() + ": total energy drift at the end " + format(drift_) +
-                ", largest |drift| " + format(maxDrift_)};
+        return {this->name() + ": total energy drift at the end " + formatScientific(drift_) +
+                ", largest |drift| " + formatScientific(maxDrift_)};
     }
     std::string summary() const override { return "energy"; }
     std::map<std::string, double> results() const override
     {
-        return {{"finalDrift", drift_}, {"maxDrift", maxDrift_}, {"maxStrainOverKinetic", maxStrainRatio_}};
+        return {{"finalDrift", drift_},
+                {"maxDrift", maxDrift_},
+                {"maxStrainOverKinetic", maxStrainRatio_}};
     }
     void saveState(std::map<std::string, double>& state) const override
     {
@@ -132,13 +137,6 @@ public:
     }
 
 private:
-    static std::string format(double value)
-    {
-        char buffer[32];
-        std::snprintf(buffer, sizeof buffer, "%.3e", value);
-        return buffer;
-    }
-
     double lastDeltaT_ = 0.0;
     double reference_ = 0.0;
     bool haveReference_ = false;

@@ -20,6 +20,7 @@
 // V (L - x_s)/c, and the creep: the mean of u over each complete NUMERICAL period (between
 // consecutive downward zero crossings; the exact mean is 0), which a mean over the exact
 // period would bias by the period error.
+#include "core/Format.hpp"
 #include "functionObjects/FunctionObjectModel.hpp"
 #include "functionObjects/PeriodTracker.hpp"
 
@@ -87,8 +88,7 @@ private:
     double xs_;
 };
 
-template <int D>
-class ExactSolution : public FunctionObjectModel<D>
+template <int D> class ExactSolution : public FunctionObjectModel<D>
 {
 public:
     static std::string description()
@@ -103,7 +103,8 @@ public:
             .add(Key::vector("point", "probe location, by initial position [m] (default: the "
                                       "free end)")
                      .optional())
-            .add(Key::real("length", "bar length from the fixed particle [m]").positive().optional())
+            .add(
+                Key::real("length", "bar length from the fixed particle [m]").positive().optional())
             .add(Key::real("waveSpeed", "wave speed c [m/s]").positive().optional())
             .add(Key::real("velocity", "initial velocity of the moving segment [m/s]").optional())
             .add(Key::real("loadedFrom", "start x_s of the moving segment [m]").optional());
@@ -147,7 +148,8 @@ public:
         const double waveSpeed =
             params.has("waveSpeed")
                 ? params.real("waveSpeed")
-                : (*args.materials)[static_cast<std::size_t>(p.body[probe])]->waveSpeed(Mat<D>::Identity());
+                : (*args.materials)[static_cast<std::size_t>(p.body[probe])]->waveSpeed(
+                      Mat<D>::Identity());
         // The moving segment from the initial velocities: at rest up to some particle, then
         // one uniform velocity to the end.
         double velocity = p.v[last][0];
@@ -162,9 +164,10 @@ public:
             {
                 if (p.v[a][0] != 0.0)
                 {
-                    params.fail("solution", "fixedFreeBar: the bar must be at rest except a "
-                                            "uniformly moving end segment (particle " +
-                                                std::to_string(a) + " moves)",
+                    params.fail("solution",
+                                "fixedFreeBar: the bar must be at rest except a "
+                                "uniformly moving end segment (particle " +
+                                    std::to_string(a) + " moves)",
                                 {"Give 'velocity' and 'loadedFrom' to describe the load "
                                  "explicitly."});
                 }
@@ -182,13 +185,14 @@ public:
             params.fail("solution", "fixedFreeBar: the moving segment must start inside the bar");
         }
         solution_ = std::make_unique<FixedFreeBar>(length, waveSpeed, velocity, loadedFrom);
-        description_ = "L=" + number(length) + " m, c=" + number(waveSpeed) + " m/s, V=" +
-                       number(velocity) + " m/s, x_s=" + number(loadedFrom) + " m, probe " +
-                       std::to_string(probe) + " at xi=" + number(xi_) + " m, period " +
-                       number(solution_->period()) + " s, amplitude " +
-                       number(solution_->amplitude()) + " m";
-        this->setColumns({"u_numeric", "u_exact", "u_error", "v_numeric", "v_exact",
-                          "u_periodMean"});
+        description_ = "L=" + formatNumber(length, 5) + " m, c=" + formatNumber(waveSpeed, 5) +
+                       " m/s, V=" + formatNumber(velocity, 5) +
+                       " m/s, x_s=" + formatNumber(loadedFrom, 5) + " m, probe " +
+                       std::to_string(probe) + " at xi=" + formatNumber(xi_, 5) + " m, period " +
+                       formatNumber(solution_->period(), 5) + " s, amplitude " +
+                       formatNumber(solution_->amplitude(), 5) + " m";
+        this->setColumns(
+            {"u_numeric", "u_exact", "u_error", "v_numeric", "v_exact", "u_periodMean"});
     }
 
     void execute(const StepState<D>& state) override
@@ -214,18 +218,19 @@ public:
         const double amplitude = solution_->amplitude();
         std::vector<std::string> lines{
             this->name() + ": fixedFreeBar " + description_,
-            this->name() + ": displacement error Linf " + number(maxError_) + " m (" +
-                number(maxError_ / amplitude) + " of the amplitude), RMS " + number(rms) + " m (" +
-                number(rms / amplitude) + ")"};
+            this->name() + ": displacement error Linf " + formatNumber(maxError_, 5) + " m (" +
+                formatNumber(maxError_ / amplitude, 5) + " of the amplitude), RMS " +
+                formatNumber(rms, 5) + " m (" + formatNumber(rms / amplitude, 5) + ")"};
         if (periods_.periods() > 0)
         {
-            lines.push_back(this->name() + ": " + std::to_string(periods_.periods()) +
-                            " numerical periods, the last " + number(periods_.lastPeriod()) + " s (" +
-                            number(100.0 * (periods_.lastPeriod() / solution_->period() - 1.0)) +
-                            " % from 4L/c); mean displacement over it " + number(periods_.lastMean()) +
-                            " m (" + number(periods_.lastMean() / amplitude) +
-                            " of the amplitude), largest |mean| " +
-                            number(periods_.maxAbsMean() / amplitude));
+            lines.push_back(
+                this->name() + ": " + std::to_string(periods_.periods()) +
+                " numerical periods, the last " + formatNumber(periods_.lastPeriod(), 5) + " s (" +
+                formatNumber(100.0 * (periods_.lastPeriod() / solution_->period() - 1.0), 5) +
+                " % from 4L/c); mean displacement over it " + formatNumber(periods_.lastMean(), 5) +
+                " m (" + formatNumber(periods_.lastMean() / amplitude, 5) +
+                " of the amplitude), largest |mean| " +
+                formatNumber(periods_.maxAbsMean() / amplitude, 5));
         }
         return lines;
     }
@@ -244,7 +249,10 @@ public:
                 {"relativePeriodMean", periods_.lastMean() / amplitude},
                 {"relativeMaxPeriodMean", periods_.maxAbsMean() / amplitude}};
     }
-    std::string summary() const override { return "exactSolution(fixedFreeBar, " + description_ + ")"; }
+    std::string summary() const override
+    {
+        return "exactSolution(fixedFreeBar, " + description_ + ")";
+    }
 
     void saveState(std::map<std::string, double>& state) const override
     {
@@ -264,14 +272,6 @@ public:
     }
 
 private:
-    static std::string number(double value)
-    {
-        std::ostringstream out;
-        out.precision(5);
-        out << value;
-        return out.str();
-    }
-
     std::unique_ptr<FixedFreeBar> solution_;
     std::size_t probe_ = 0;
     double xi_ = 0.0;

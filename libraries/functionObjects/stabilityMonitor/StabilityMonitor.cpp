@@ -20,8 +20,7 @@
 namespace sph
 {
 
-template <int D>
-class StabilityMonitor : public FunctionObjectModel<D>
+template <int D> class StabilityMonitor : public FunctionObjectModel<D>
 {
 public:
     static std::string description()
@@ -34,8 +33,8 @@ public:
     StabilityMonitor(const Params& params, const typename FunctionObject<D>::Args& args)
         : FunctionObjectModel<D>(params, args), spacing_(initialSpacing(*args.initial))
     {
-        this->setColumns({"zeroEnergyIndicator", "worstParticle", "minJ", "maxJ",
-                          "minDistanceRatio"});
+        this->setColumns(
+            {"zeroEnergyIndicator", "worstParticle", "minJ", "maxJ", "minDistanceRatio"});
     }
 
     void execute(const StepState<D>& state) override
@@ -87,6 +86,8 @@ public:
         last_ = indicator;
         maxIndicator_ = std::max(maxIndicator_, indicator);
         minDistanceRatio_ = std::min(minDistanceRatio_, std::sqrt(minDistance2) / spacing_);
+        lowestJ_ = std::min(lowestJ_, minJ);
+        highestJ_ = std::max(highestJ_, maxJ);
         this->writeRow(state.time, state.deltaT,
                        {indicator, static_cast<double>(worst), minJ, maxJ,
                         std::sqrt(minDistance2) / spacing_});
@@ -107,7 +108,9 @@ public:
                 {"finalIndicator", last_},
                 {"maxIndicator", maxIndicator_},
                 {"indicatorGrowth", first_ > 0.0 ? maxIndicator_ / first_ : 0.0},
-                {"minDistanceRatio", minDistanceRatio_}};
+                {"minDistanceRatio", minDistanceRatio_},
+                {"minJ", lowestJ_},
+                {"maxJ", highestJ_}};
     }
     std::string summary() const override { return "stabilityMonitor"; }
     void saveState(std::map<std::string, double>& state) const override
@@ -118,6 +121,8 @@ public:
         state["haveFirst"] = haveFirst_ ? 1.0 : 0.0;
         state["maxIndicator"] = maxIndicator_;
         state["minDistanceRatio"] = minDistanceRatio_;
+        state["lowestJ"] = lowestJ_;
+        state["highestJ"] = highestJ_;
     }
     void restoreState(const std::map<std::string, double>& state) override
     {
@@ -127,6 +132,8 @@ public:
         haveFirst_ = state.at("haveFirst") != 0.0;
         maxIndicator_ = state.at("maxIndicator");
         minDistanceRatio_ = state.at("minDistanceRatio");
+        lowestJ_ = state.at("lowestJ");
+        highestJ_ = state.at("highestJ");
     }
 
 private:
@@ -145,6 +152,8 @@ private:
     double last_ = 0.0;
     double maxIndicator_ = 0.0;
     double minDistanceRatio_ = std::numeric_limits<double>::max();
+    double lowestJ_ = std::numeric_limits<double>::max();
+    double highestJ_ = std::numeric_limits<double>::lowest();
 };
 
 SPH_REGISTER_DIM_MODEL(FunctionObject, StabilityMonitor, "stabilityMonitor");

@@ -10,7 +10,9 @@ template <int D>
 std::string Hourglass<D>::description()
 {
     return "Ganzenmueller (2015) hourglass control: pairwise penalty on the error of the "
-           "F-predicted bond, parameter alpha (spec §5.2). Not derived from an energy.";
+           "F-predicted bond, parameter alpha (spec §5.2). Not derived from an energy. Acts in "
+           "total-Lagrangian form; updated-Lagrangian with referenceUpdateInterval 1 makes the "
+           "bond error zero at every step (then it is 'none').";
 }
 
 template <int D>

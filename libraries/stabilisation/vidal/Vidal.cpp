@@ -1,3 +1,4 @@
+#include "core/Format.hpp"
 #include "particles/Parallel.hpp"
 #include "stabilisation/vidal/Vidal.hpp"
 
@@ -29,7 +30,7 @@ Vidal<D>::Vidal(const Params& params, const typename Stabilisation<D>::Args& arg
 {
     if (!(beta_.norm() < 1.0))
     {
-        params.fail("beta", "vidal: |beta| = " + std::to_string(beta_.norm()) + " must be below 1",
+        params.fail("beta", "vidal: |beta| = " + formatNumber(beta_.norm()) + " must be below 1",
                     {"beta shifts the gradient's evaluation point by h*beta; keep it well inside "
                      "the kernel support."});
     }

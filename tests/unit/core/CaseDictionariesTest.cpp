@@ -39,6 +39,24 @@ TEST_CASE("set overrides replace, adds and finds the right file", "[case]")
     CHECK(control.find("endTime")->items()[0].location().column == 14);
 }
 
+TEST_CASE("a set value in braces replaces or adds a whole dictionary", "[case]")
+{
+    sph::test::TempDir dir;
+    writeCase(dir);
+    CaseDictionaries dicts(dir.path());
+    dicts.read({"controlDict", "sphSchemes", "bodies"});
+    dicts.applySets({"bar.material={ type neoHookean; mu 1e5; kappa 3e5; rho 10; }",
+                     "sphSchemes.contact={type none;}"});
+    const Dictionary& material = dicts.get("bodies").find("bar")->dict().find("material")->dict();
+    CHECK(material.keys() == std::vector<std::string>{"type", "mu", "kappa", "rho"});
+    CHECK(material.find("type")->items()[0].text() == "neoHookean");
+    CHECK(material.find("E") == nullptr); // the old entries are gone
+    // Locations point into the command line: "-set bar.material={ type" -> 'type' at column 21.
+    CHECK(material.find("type")->keyLocation().fileName() == "command line");
+    CHECK(material.find("type")->keyLocation().column == 21);
+    CHECK(dicts.get("sphSchemes").find("contact")->dict().find("type")->items()[0].text() == "none");
+}
+
 TEST_CASE("set override errors point into the command line", "[case][errors]")
 {
     sph::test::TempDir dir;
@@ -66,6 +84,15 @@ TEST_CASE("set override errors point into the command line", "[case][errors]")
     {
         requireInputError([&] { dicts.applySets({"stabilisation=gradF"}); }, 1, 6,
                           "'stabilisation' is a dictionary");
+    }
+    SECTION("an unclosed brace")
+    {
+        requireInputError([&] { dicts.applySets({"bar.material={ type x;"}); }, 1, 19,
+                          "the '{' of this value is not closed");
+    }
+    SECTION("a syntax error inside braces points at it")
+    {
+        requireInputError([&] { dicts.applySets({"bar.material={ type (x; }"}); }, 1, 26, "");
     }
     SECTION("bad value syntax")
     {

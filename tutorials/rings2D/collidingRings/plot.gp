@@ -2,6 +2,7 @@
 set terminal pngcairo size 1000,600 font "Sans,11"
 set datafile commentschars "#"
 set grid
+set autoscale xfix
 scheme = system("awk '/^Scheme/{s=$2} /^Formulation/{f=$2} END{print f\" + \"s}' log.sphSolid")
 
 # Seed Fig. 9: the largest y-displacement of each ring.
@@ -24,9 +25,9 @@ plot "postProcessing/energy/energy.dat" using 1:2 with lines lw 2 title "kinetic
      "" using 1:6 with lines lw 2 lc rgb "black" title "total"
 
 # Seed Fig. 8: P_xx on the deformed rings every 0.01 s.
-set terminal pngcairo size 1500,1150 font "Sans,10"
+set terminal pngcairo size 1500,720 font "Sans,10"
 set output "snapshots.png"
-set multiplot layout 4,3 title "Colliding rings (".scheme."): P_{xx} [MPa]" margins 0.02,0.9,0.03,0.93 spacing 0.01,0.05
+set multiplot layout 4,3 title "Colliding rings (".scheme."): P_{xx} [MPa]" margins 0.01,0.9,0.02,0.9 spacing 0.01,0.06
 unset grid
 unset key
 unset colorbox

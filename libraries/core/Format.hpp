@@ -1,0 +1,27 @@
+#pragma once
+// Numbers in messages and summaries: as short as they can be (1.67e+06, 1.5, 0.001), not
+// std::to_string's fixed six decimals (1670000.000000).
+
+#include <cstdio>
+#include <string>
+
+namespace sph
+{
+
+// %g with `significant` digits: 1.5, 0.0015, 1.67e+06.
+inline std::string formatNumber(double value, int significant = 6)
+{
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.*g", significant, value);
+    return buffer;
+}
+
+// Scientific with `decimals` digits after the point: 4.775e-04 (columns of figures).
+inline std::string formatScientific(double value, int decimals = 3)
+{
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.*e", decimals, value);
+    return buffer;
+}
+
+} // namespace sph
