@@ -29,9 +29,15 @@ Schema studySchema()
     return Schema()
         .add(Key::dict("axes", "what the study varies: axis { level { particles (...); solver "
                                "(...); } ... }"))
-        .add(Key::dict("common", "overrides every variant shares: { particles (...); solver (...); }").optional())
-        .add(Key::integer("repeats", "runs per variant; the times are their median").min(1).defaultValue("1"))
-        .add(Key::integer("threads", "OpenMP threads per run (0: all cores)").min(0).defaultValue("0"))
+        .add(Key::dict("common",
+                       "overrides every variant shares: { particles (...); solver (...); }")
+                 .optional())
+        .add(Key::integer("repeats", "runs per variant; the times are their median")
+                 .min(1)
+                 .defaultValue("1"))
+        .add(Key::integer("threads", "OpenMP threads per run (0: all cores)")
+                 .min(0)
+                 .defaultValue("0"))
         .add(Key::dict("metrics", "error measures: name { type exactSolution | summary | "
                                   "referenceVariant | referenceFile; ... }; the first is plotted"))
         .add(Key::dict("plot", "{ groupBy AXIS; along AXIS; }: one line per level of groupBy, "
@@ -42,8 +48,10 @@ Schema studySchema()
 Schema levelSchema()
 {
     return Schema()
-        .add(Key::stringList("particles", "overrides for sphParticles, e.g. (\"bar.n=80\")").defaultValue("()"))
-        .add(Key::stringList("solver", "overrides for sphSolid, e.g. (\"courant=0.1\")").defaultValue("()"));
+        .add(Key::stringList("particles", "overrides for sphParticles, e.g. (\"bar.n=80\")")
+                 .defaultValue("()"))
+        .add(Key::stringList("solver", "overrides for sphSolid, e.g. (\"courant=0.1\")")
+                 .defaultValue("()"));
 }
 
 Schema metricSchema()
@@ -56,14 +64,82 @@ Schema metricSchema()
                                   "summary: a path in summary.json, e.g. functions/energy/maxDrift")
                  .optional())
         .add(Key::string("file", "referenceVariant/referenceFile: a table of each variant, "
-                                 "relative to its case").optional())
+                                 "relative to its case")
+                 .optional())
         .add(Key::word("column", "the column of that table").optional())
         .add(Key::word("variant", "referenceVariant: the variant to compare with").optional())
-        .add(Key::string("reference", "referenceFile: the reference table, relative to the case").optional())
-        .add(Key::string("referenceColumn", "referenceFile: its column (name or 1-based number)").optional())
+        .add(Key::dict("referenceLevels", "referenceVariant: { axis level; ... }: compare each "
+                                          "variant with the one that differs only in these levels")
+                 .optional())
+        .add(Key::real("scale", "divide the difference by this instead of max |reference|")
+                 .positive()
+                 .optional())
+        .add(Key::string("reference", "referenceFile: the reference table, relative to the case")
+                 .optional())
+        .add(Key::string("referenceColumn", "referenceFile: its column (name or 1-based number)")
+                 .optional())
         .add(Key::word("norm", "max or rms of the difference, relative to max |reference|")
                  .choices({"max", "rms"})
                  .defaultValue("max"));
+}
+
+// The reference of a referenceVariant metric: one named variant, or levels that replace each
+// variant's own on some axes.
+void readReference(const Params& q, const StudyDefinition& study, StudyMetric& metric,
+                   const std::vector<std::string>& variantNames)
+{
+    if (q.has("variant") == q.has("referenceLevels"))
+    {
+        throw InputError(metric.where,
+                         "metric '" + metric.name +
+                             "' of type referenceVariant needs either 'variant' or "
+                             "'referenceLevels'",
+                         {"variant NAME; compares every variant with one; referenceLevels { axis "
+                          "level; } with the variant that differs only there."});
+    }
+    if (q.has("variant"))
+    {
+        metric.variant = q.word("variant");
+        if (std::find(variantNames.begin(), variantNames.end(), metric.variant) ==
+            variantNames.end())
+        {
+            q.fail("variant", "metric '" + metric.name + "': no variant '" + metric.variant + "'",
+                   {"Variants are the level names joined by '_' in axis order, e.g. " +
+                        variantNames.front() + ".",
+                    didYouMean(metric.variant, variantNames)});
+        }
+        return;
+    }
+    for (const Entry& entry : q.dict("referenceLevels").entries())
+    {
+        const auto axis = std::find_if(study.axes.begin(), study.axes.end(),
+                                       [&](const StudyAxis& a) { return a.name == entry.key(); });
+        std::vector<std::string> names;
+        for (const auto& a : study.axes)
+        {
+            names.push_back(a.name);
+        }
+        if (axis == study.axes.end())
+        {
+            throw InputError(entry.keyLocation(), "referenceLevels: no axis '" + entry.key() + "'",
+                             {"Axes: " + joinSorted(names), didYouMean(entry.key(), names)});
+        }
+        const std::string level =
+            entry.isDict() || entry.items().size() != 1 ? "" : entry.items()[0].text();
+        names.clear();
+        for (const auto& l : axis->levels)
+        {
+            names.push_back(l.name);
+        }
+        if (std::find(names.begin(), names.end(), level) == names.end())
+        {
+            throw InputError(entry.isDict() ? entry.keyLocation() : entry.valueLocation(),
+                             "referenceLevels: axis '" + entry.key() + "' has no level '" + level +
+                                 "'",
+                             {"Levels: " + joinSorted(names), didYouMean(level, names)});
+        }
+        metric.referenceLevels[entry.key()] = level;
+    }
 }
 
 } // namespace
@@ -83,7 +159,8 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
     {
         if (!axisEntry.isDict())
         {
-            throw InputError(axisEntry.keyLocation(), "axis '" + axisEntry.key() + "' must be a dictionary of levels",
+            throw InputError(axisEntry.keyLocation(),
+                             "axis '" + axisEntry.key() + "' must be a dictionary of levels",
                              {"e.g. resolution { n40 { particles (\"bar.n=40\"); } }"});
         }
         StudyAxis axis{axisEntry.key(), {}};
@@ -96,7 +173,8 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
                                      "' must be a dictionary { particles (...); solver (...); }");
             }
             const Params q = validate(levelSchema(), levelEntry.dict(), "a study level");
-            axis.levels.push_back({levelEntry.key(), q.stringList("particles"), q.stringList("solver")});
+            axis.levels.push_back(
+                {levelEntry.key(), q.stringList("particles"), q.stringList("solver")});
         }
         if (axis.levels.empty())
         {
@@ -117,15 +195,18 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
     {
         if (!entry.isDict())
         {
-            throw InputError(entry.keyLocation(), "metric '" + entry.key() + "' must be a dictionary { type ...; }");
+            throw InputError(entry.keyLocation(),
+                             "metric '" + entry.key() + "' must be a dictionary { type ...; }");
         }
         const Params q = validate(metricSchema(), entry.dict(), "a metric", true);
         StudyMetric metric;
         metric.name = entry.key();
         metric.type = q.word("type");
         metric.norm = q.word("norm");
+        metric.scale = q.has("scale") ? q.real("scale") : 0.0;
         metric.where = entry.keyLocation();
-        const auto need = [&](const char* key) {
+        const auto need = [&](const char* key)
+        {
             if (!q.has(key))
             {
                 throw InputError(entry.keyLocation(), "metric '" + metric.name + "' of type " +
@@ -151,15 +232,7 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
             metric.column = q.word("column");
             if (metric.type == "referenceVariant")
             {
-                need("variant");
-                metric.variant = q.word("variant");
-                if (std::find(variantNames.begin(), variantNames.end(), metric.variant) == variantNames.end())
-                {
-                    q.fail("variant", "metric '" + metric.name + "': no variant '" + metric.variant + "'",
-                           {"Variants are the level names joined by '_' in axis order, e.g. " +
-                                variantNames.front() + ".",
-                            didYouMean(metric.variant, variantNames)});
-                }
+                readReference(q, study, metric, variantNames);
             }
             else
             {
@@ -184,10 +257,15 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
     study.along = study.axes.front().name;
     if (p.has("plot"))
     {
-        const Params q = validate(Schema()
-                                      .add(Key::word("groupBy", "one line per level of this axis").choices(axisNames).optional())
-                                      .add(Key::word("along", "the lines connect the levels of this axis").choices(axisNames).optional()),
-                                  p.dict("plot"), "plot");
+        const Params q =
+            validate(Schema()
+                         .add(Key::word("groupBy", "one line per level of this axis")
+                                  .choices(axisNames)
+                                  .optional())
+                         .add(Key::word("along", "the lines connect the levels of this axis")
+                                  .choices(axisNames)
+                                  .optional()),
+                     p.dict("plot"), "plot");
         if (q.has("groupBy"))
         {
             study.groupBy = q.word("groupBy");
@@ -227,7 +305,8 @@ std::vector<StudyVariant> StudyDefinition::variants() const
             const StudyLevel& level = axes[a].levels[index[a]];
             variant.name += (a ? "_" : "") + level.name;
             variant.levels.push_back(level.name);
-            variant.particles.insert(variant.particles.end(), level.particles.begin(), level.particles.end());
+            variant.particles.insert(variant.particles.end(), level.particles.begin(),
+                                     level.particles.end());
             variant.solver.insert(variant.solver.end(), level.solver.begin(), level.solver.end());
         }
         result.push_back(variant);
@@ -243,11 +322,33 @@ std::vector<StudyVariant> StudyDefinition::variants() const
         }
     }
     // Variants that others are compared with run first.
-    std::stable_partition(result.begin(), result.end(), [&](const StudyVariant& v) {
-        return std::any_of(metrics.begin(), metrics.end(),
-                           [&](const StudyMetric& m) { return m.variant == v.name; });
-    });
+    std::stable_partition(result.begin(), result.end(),
+                          [&](const StudyVariant& v)
+                          {
+                              return std::any_of(metrics.begin(), metrics.end(),
+                                                 [&](const StudyMetric& m) {
+                                                     return m.type == "referenceVariant" &&
+                                                            referenceOf(m, v) == v.name;
+                                                 });
+                          });
     return result;
+}
+
+std::string StudyDefinition::referenceOf(const StudyMetric& metric,
+                                         const StudyVariant& variant) const
+{
+    if (!metric.variant.empty())
+    {
+        return metric.variant;
+    }
+    std::string name;
+    for (std::size_t a = 0; a < axes.size(); ++a)
+    {
+        const auto level = metric.referenceLevels.find(axes[a].name);
+        name += (a ? "_" : "") +
+                (level != metric.referenceLevels.end() ? level->second : variant.levels[a]);
+    }
+    return name;
 }
 
 } // namespace sph

@@ -4,8 +4,10 @@
 //   axes                                     // every combination of levels is a variant
 //   {
 //       resolution { n40 { particles ("bar.n=40"); } n80 { particles ("bar.n=80"); } }
-//       scheme     { TLnone  { solver ("formulation.type=totalLagrangian" "stabilisation.type=none"); }
-//                    ULgradF { solver ("formulation.type=updatedLagrangian" "stabilisation.type=gradF"); } }
+//       scheme     { TLnone  { solver ("formulation.type=totalLagrangian"
+//       "stabilisation.type=none"); }
+//                    ULgradF { solver ("formulation.type=updatedLagrangian"
+//                    "stabilisation.type=gradF"); } }
 //   }
 //   common { solver ("writeInterval=1"); }  // overrides every variant shares (optional)
 //   repeats  1;                 // runs per variant; times are their median
@@ -14,8 +16,12 @@
 //   {
 //       tipError { type exactSolution; functionObject tipError; value relativeLinfError; }
 //       energy   { type summary; value functions/energy/maxDrift; }
-//       extent   { type referenceVariant; variant n640_ULgradF; file postProcessing/extent/extent.dat;
+//       extent   { type referenceVariant; variant n640_ULgradF; file
+//       postProcessing/extent/extent.dat;
 //                  column ringA_maxDisplacement; norm max; }
+//       growth   { type referenceVariant; referenceLevels { seed clean; }   // each variant against
+//                  file postProcessing/probe/probe.dat; column p0_displacement_x; scale 1e-9; }
+//                  // the one that differs only in these levels (here: the same scheme, no noise)
 //       data     { type referenceFile; file postProcessing/x/x.dat; column c; reference "ref.dat";
 //                  referenceColumn 2; norm rms; }
 //   }
@@ -50,14 +56,17 @@ struct StudyAxis
 struct StudyMetric
 {
     std::string name;
-    std::string type;          // exactSolution | summary | referenceVariant | referenceFile
-    std::string value;         // summary path (exactSolution: functions/<fo>/<value>)
-    std::string file;          // table in each variant (referenceVariant/referenceFile)
+    std::string type;  // exactSolution | summary | referenceVariant | referenceFile
+    std::string value; // summary path (exactSolution: functions/<fo>/<value>)
+    std::string file;  // table in each variant (referenceVariant/referenceFile)
     std::string column;
-    std::string variant;       // the reference variant
-    std::string reference;     // referenceFile: the reference table (relative to the case)
+    std::string variant; // the reference variant, or
+    std::map<std::string, std::string>
+        referenceLevels;   // axis -> level: the variant that differs only there
+    std::string reference; // referenceFile: the reference table (relative to the case)
     std::string referenceColumn;
-    std::string norm;          // max | rms (of the difference, relative to max |reference|)
+    std::string norm;   // max | rms (of the difference, relative to max |reference|)
+    double scale = 0.0; // > 0: divide the difference by this instead
     SourceLocation where;
 };
 
@@ -84,6 +93,8 @@ struct StudyDefinition
     // Every combination of levels, references first.
     std::vector<StudyVariant> variants() const;
     std::size_t axisIndex(const std::string& name) const;
+    // The variant a referenceVariant metric compares `variant` with.
+    std::string referenceOf(const StudyMetric& metric, const StudyVariant& variant) const;
 };
 
 } // namespace sph

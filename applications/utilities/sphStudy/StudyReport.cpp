@@ -106,9 +106,9 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
         {
             md << " " << level << " |";
         }
-        md << " " << r.status << " | " << number(r.particles, "%.0f") << " | " << number(r.wallSeconds)
-           << " | " << number(r.usPerParticleStep, "%.3f") << " | " << number(r.peakMemoryMB, "%.1f")
-           << " |";
+        md << " " << r.status << " | " << number(r.particles, "%.0f") << " | "
+           << number(r.wallSeconds) << " | " << number(r.usPerParticleStep, "%.3f") << " | "
+           << number(r.peakMemoryMB, "%.1f") << " |";
         for (const auto& metric : study.metrics)
         {
             md << " " << number(r.metrics.at(metric.name)) << " |";
@@ -119,13 +119,15 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
     std::vector<const VariantResult*> finished;
     for (const auto& r : results)
     {
-        if (r.status == "finished" && !std::isnan(r.metrics.at(primary)) && !std::isnan(r.wallSeconds))
+        if (r.status == "finished" && !std::isnan(r.metrics.at(primary)) &&
+            !std::isnan(r.wallSeconds))
         {
             finished.push_back(&r);
         }
     }
     std::sort(finished.begin(), finished.end(),
-              [](const VariantResult* a, const VariantResult* b) { return a->wallSeconds < b->wallSeconds; });
+              [](const VariantResult* a, const VariantResult* b)
+              { return a->wallSeconds < b->wallSeconds; });
     md << "\n**Best " << primary << " for the wall time** (the Pareto front: no other finished "
        << "variant is both faster and more accurate), fastest first:\n\n";
     double best = std::numeric_limits<double>::infinity();
@@ -217,9 +219,11 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
             }
         }
         writeTextAtomically(plotDir / (name + ".dat"), data.str());
-        plots += (plots.empty() ? "" : ", ") + std::string("'plot/") + name + ".dat' using %X:3 with linespoints lw 2 title '" + name + "'";
+        plots += (plots.empty() ? "" : ", ") + std::string("'plot/") + name +
+                 ".dat' using %X:3 with linespoints lw 2 title '" + name + "'";
     }
-    const auto plotOf = [&](const std::string& x) {
+    const auto plotOf = [&](const std::string& x)
+    {
         std::string command = plots;
         for (std::string::size_type pos; (pos = command.find("%X")) != std::string::npos;)
         {

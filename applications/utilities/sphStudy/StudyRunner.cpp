@@ -157,7 +157,8 @@ struct Table
         }
         char* end = nullptr;
         const long number = std::strtol(name.c_str(), &end, 10);
-        if (end && *end == '\0' && number >= 1 && static_cast<std::size_t>(number) <= columns.size())
+        if (end && *end == '\0' && number >= 1 &&
+            static_cast<std::size_t>(number) <= columns.size())
         {
             return columns[static_cast<std::size_t>(number - 1)];
         }
@@ -166,15 +167,17 @@ struct Table
 };
 
 // max or rms of (value - reference interpolated at the value's times) over the common time
-// range, relative to max |reference|.
+// range, relative to `scale`, or to max |reference| when scale is 0.
 double difference(const std::vector<double>& time, const std::vector<double>& value,
                   const std::vector<double>& referenceTime, const std::vector<double>& reference,
-                  const std::string& norm)
+                  const std::string& norm, double scale)
 {
-    double scale = 0.0;
-    for (double r : reference)
+    if (scale <= 0.0)
     {
-        scale = std::max(scale, std::abs(r));
+        for (double r : reference)
+        {
+            scale = std::max(scale, std::abs(r));
+        }
     }
     double worst = 0.0;
     double squares = 0.0;
@@ -378,7 +381,8 @@ void StudyRunner::computeMetrics(VariantResult& result) const
                 std::string referenceColumn = metric.column;
                 if (metric.type == "referenceVariant")
                 {
-                    reference = Table::read(variantDir(metric.variant) / metric.file);
+                    reference = Table::read(variantDir(study_.referenceOf(metric, result.variant)) /
+                                            metric.file);
                 }
                 else
                 {
@@ -387,7 +391,7 @@ void StudyRunner::computeMetrics(VariantResult& result) const
                 }
                 value = difference(own.columns.at(0), own.column(metric.column),
                                    reference.columns.at(0), reference.column(referenceColumn),
-                                   metric.norm);
+                                   metric.norm, metric.scale);
             }
         }
         catch (const std::exception&)

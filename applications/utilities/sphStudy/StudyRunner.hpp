@@ -20,8 +20,8 @@ struct VariantResult
     std::string failure;
     double particles = 0.0;
     double steps = 0.0;
-    double wallSeconds = 0.0;        // median over repeats, time loop only
-    double usPerParticleStep = 0.0;  // median, output excluded
+    double wallSeconds = 0.0;       // median over repeats, time loop only
+    double usPerParticleStep = 0.0; // median, output excluded
     double peakMemoryMB = 0.0;
     std::map<std::string, double> metrics; // NaN where not available
     bool reused = false;                   // from an earlier, interrupted run of the study

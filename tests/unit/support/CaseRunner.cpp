@@ -2,6 +2,9 @@
 
 #include "solver/Applications.hpp"
 
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -84,6 +87,17 @@ int runProcess(const std::string& app, const std::vector<std::string>& args, std
     }
     std::filesystem::remove(log);
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+double summaryValue(const std::filesystem::path& caseDir, const std::string& path)
+{
+    namespace pt = boost::property_tree;
+    pt::ptree tree;
+    pt::read_json((caseDir / "postProcessing" / "summary.json").string(), tree);
+    const auto value = tree.get_optional<double>(pt::ptree::path_type(path, '/'));
+    INFO("summary.json has no number at " << path);
+    REQUIRE(value.has_value());
+    return *value;
 }
 
 std::vector<double> Table::column(const std::string& name) const

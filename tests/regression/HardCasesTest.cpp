@@ -1,0 +1,151 @@
+// The hard cases of tutorials/hardCases (issue 6), shortened, with the paper's scheme
+// (updated-Lagrangian CSPH + gradient-of-F stabilisation): each asserts the case's own
+// measure of "stable" from its README. The full runs, with every scheme, are the studies in
+// each case folder (sphStudy).
+#include "support/CaseRunner.hpp"
+
+#include <cmath>
+#include <iostream>
+
+using namespace sph;
+
+namespace
+{
+
+std::filesystem::path prepare(const test::TempDir& dir, const std::string& hardCase,
+                              const std::vector<std::string>& particleSets = {})
+{
+    const auto caseDir = test::copyTutorial("hardCases/" + hardCase, dir.path());
+    std::vector<std::string> args;
+    for (const auto& set : particleSets)
+    {
+        args.insert(args.end(), {"-set", set});
+    }
+    REQUIRE(test::runParticles(caseDir, args) == 0);
+    return caseDir;
+}
+
+std::vector<std::string> withSets(const std::vector<std::string>& sets)
+{
+    std::vector<std::string> args{"-set", "writeInterval=1"};
+    for (const auto& set : sets)
+    {
+        args.insert(args.end(), {"-set", set});
+    }
+    return args;
+}
+
+} // namespace
+
+TEST_CASE("hard case long bar: no creep over 50 ms", "[hardCases]")
+{
+    test::TempDir dir;
+    const auto caseDir = prepare(dir, "longBar");
+    REQUIRE(test::runSolver(caseDir, withSets({})) == 0);
+    const double creep = test::summaryValue(caseDir, "functions/tipError/relativeMaxPeriodMean");
+    const double drift = test::summaryValue(caseDir, "functions/energy/maxDrift");
+    std::cout << "longBar: largest one-period mean of the tip / amplitude " << creep
+              << ", energy drift " << drift << "\n";
+    CHECK(std::abs(creep) < 0.02);
+    CHECK(drift < 0.01);
+}
+
+TEST_CASE("hard case tensile instability: the noise does not grow", "[hardCases]")
+{
+    // 3000 of the 10 000 steps, with and without the noise; the perturbation is the difference.
+    test::TempDir dir;
+    const auto noisy = prepare(dir, "tensileInstability");
+    REQUIRE(test::runSolver(noisy, withSets({"maxSteps=3000"})) == 0);
+    test::TempDir cleanDir;
+    const auto clean = prepare(cleanDir, "tensileInstability");
+    REQUIRE(test::runSolver(clean,
+                            withSets({"maxSteps=3000",
+                                      "bodies.block.initialDisplacement.noise.amplitude=0"})) == 0);
+    const auto a = test::readTable(noisy / "postProcessing/probe/probe.dat");
+    const auto b = test::readTable(clean / "postProcessing/probe/probe.dat");
+    double growth = 0.0;
+    for (const char* column : {"displacement_x_0", "displacement_y_0", "displacement_x_1",
+                               "displacement_y_1", "displacement_x_2", "displacement_y_2"})
+    {
+        const auto u = a.column(column);
+        const auto v = b.column(column);
+        REQUIRE(u.size() == v.size());
+        for (std::size_t i = 0; i < u.size(); ++i)
+        {
+            growth = std::max(growth, std::abs(u[i] - v[i]) / 1e-9); // noise amplitude 1e-9 m
+        }
+    }
+    const double closest = test::summaryValue(noisy, "functions/stability/minDistanceRatio");
+    std::cout << "tensileInstability: perturbation / noise amplitude " << growth
+              << ", closest neighbours " << closest << " spacings\n";
+    CHECK(growth < 10.0);
+    CHECK(closest > 1.0); // the stretched lattice stays a lattice (spacing 1.1)
+}
+
+TEST_CASE("hard case zero-energy mode: the seeded checkerboard stays bounded through a slam",
+          "[hardCases]")
+{
+    test::TempDir dir;
+    const auto caseDir = prepare(dir, "zeroEnergyMode");
+    REQUIRE(test::runSolver(caseDir, withSets({"maxSteps=2500"})) == 0);
+    const double indicator = test::summaryValue(caseDir, "functions/stability/maxIndicator");
+    const double closest = test::summaryValue(caseDir, "functions/stability/minDistanceRatio");
+    std::cout << "zeroEnergyMode: largest indicator " << indicator << ", closest neighbours "
+              << closest << " spacings\n";
+    CHECK(indicator < 0.1);
+    CHECK(closest > 0.5);
+}
+
+TEST_CASE("hard case fast rings: the rings bounce whole at 2.4 m/s", "[hardCases]")
+{
+    // 2 mm spacing, through the first contact and the largest deformation (about 16 ms).
+    test::TempDir dir;
+    const auto caseDir = prepare(dir, "fastRings", {"ringA.spacing=2e-3", "ringB.spacing=2e-3"});
+    REQUIRE(test::runSolver(caseDir, withSets({"endTime=0.02"})) == 0);
+    const double indicator = test::summaryValue(caseDir, "functions/stability/maxIndicator");
+    const double closest = test::summaryValue(caseDir, "functions/stability/minDistanceRatio");
+    const double drift = test::summaryValue(caseDir, "functions/energy/maxDrift");
+    std::cout << "fastRings: largest indicator " << indicator << ", closest neighbours " << closest
+              << " spacings, energy balance error " << drift << "\n";
+    CHECK(indicator < 0.1);
+    CHECK(closest > 0.5);
+    CHECK(drift < 0.01);
+}
+
+TEST_CASE("hard case oscillating plate: three periods, no decay, coarse", "[hardCases]")
+{
+    // 5 mm spacing (4 particles across): T is 16 % long at this resolution (README: 1.5 % at
+    // 1 mm); the test checks stability and the coarse result itself.
+    test::TempDir dir;
+    const auto caseDir = prepare(dir, "oscillatingPlate", {"plate.spacing=5e-3"});
+    REQUIRE(test::runSolver(caseDir, withSets({})) == 0);
+    const double periods = test::summaryValue(caseDir, "functions/tip/periods");
+    const double period = test::summaryValue(caseDir, "functions/tip/meanPeriod");
+    const double first = test::summaryValue(caseDir, "functions/tip/firstAmplitude");
+    const double last = test::summaryValue(caseDir, "functions/tip/lastAmplitude");
+    const double indicator = test::summaryValue(caseDir, "functions/stability/maxIndicator");
+    std::cout << "oscillatingPlate: " << periods << " periods of " << period
+              << " s, amplitude first " << first << " m, last " << last << " m, indicator "
+              << indicator << "\n";
+    CHECK(periods >= 3);
+    CHECK(period == Approx(0.2955).epsilon(0.01));
+    CHECK(last > 0.97 * first);
+    CHECK(indicator < 0.1);
+}
+
+TEST_CASE("hard case large rotation: half a turn strains nothing", "[hardCases]")
+{
+    // 4 rad/s for half a revolution (the tutorial: 2 rad/s, three revolutions).
+    test::TempDir dir;
+    const auto caseDir = prepare(dir, "largeRotation");
+    REQUIRE(test::runSolver(caseDir, withSets({"bodies.plate.initialVelocity.spin.omega=4",
+                                               "endTime=0.7854"})) == 0);
+    const double ratio = test::summaryValue(caseDir, "functions/energy/maxStrainOverKinetic");
+    const double minJ = test::summaryValue(caseDir, "functions/stability/minJ");
+    const double maxJ = test::summaryValue(caseDir, "functions/stability/maxJ");
+    std::cout << "largeRotation: strain / kinetic energy " << ratio << ", det F in [" << minJ
+              << ", " << maxJ << "]\n";
+    CHECK(ratio < 1e-6);
+    CHECK(std::abs(minJ - 1.0) < 1e-3);
+    CHECK(std::abs(maxJ - 1.0) < 1e-3);
+}

@@ -1,0 +1,171 @@
+// sphStudy end to end on a short Dyka bar: variants, metrics of every kind, references first,
+// resume, report files, and errors in studyDict.
+#include "support/CaseRunner.hpp"
+
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+using namespace sph::test;
+namespace fs = std::filesystem;
+
+namespace
+{
+
+const char* studyDict = R"(
+common { solver ("endTime=1e-3" "writeInterval=1"); }
+axes
+{
+    resolution { n20 { particles ("bar.n=20"); } n40 { particles ("bar.n=40"); } }
+    scheme
+    {
+        TLnone  { solver ("formulation.type=totalLagrangian" "stabilisation.type=none"); }
+        ULgradF { solver ("formulation.type=updatedLagrangian" "stabilisation.type=gradF"); }
+    }
+}
+threads 1;
+metrics
+{
+    tipError    { type exactSolution; functionObject tipError; }
+    energyDrift { type summary; value functions/energy/maxDrift; }
+    // Each variant against the 40-particle run of its own scheme, in units of 1 mm.
+    selfConvergence
+    {
+        type            referenceVariant;
+        referenceLevels { resolution n40; }
+        file            postProcessing/tipError/tipError.dat;
+        column          u_numeric;
+        scale           1e-3;
+    }
+    againstOne
+    {
+        type    referenceVariant;
+        variant n40_TLnone;
+        file    postProcessing/tipError/tipError.dat;
+        column  u_numeric;
+    }
+}
+plot { groupBy scheme; along resolution; }
+)";
+
+// results.csv as rows of name -> value.
+std::vector<std::map<std::string, std::string>> readCsv(const fs::path& file)
+{
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);
+    std::vector<std::string> header;
+    std::stringstream names(line);
+    for (std::string name; std::getline(names, name, ',');)
+    {
+        header.push_back(name);
+    }
+    std::vector<std::map<std::string, std::string>> rows;
+    while (std::getline(in, line))
+    {
+        std::stringstream cells(line);
+        std::map<std::string, std::string> row;
+        std::string cell;
+        for (std::size_t c = 0; c < header.size() && std::getline(cells, cell, ','); ++c)
+        {
+            row[header[c]] = cell;
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+} // namespace
+
+TEST_CASE("sphStudy runs every variant, measures, reports and resumes", "[study]")
+{
+    TempDir dir;
+    const fs::path caseDir = copyTutorial("bar1D/dykaBar", dir.path());
+    std::ofstream(caseDir / "system" / "studyDict") << studyDict;
+
+    std::string output;
+    REQUIRE(runProcess("sphStudy", {"-case", caseDir.string()}, &output) == 0);
+    INFO(output);
+    // The variants compared with others run first: n40_TLnone (both metrics), n40_ULgradF.
+    const auto first = output.find("[1/4] n40_TLnone");
+    const auto second = output.find("[2/4] n40_ULgradF");
+    CHECK(first != std::string::npos);
+    CHECK(second != std::string::npos);
+
+    const fs::path study = caseDir / "postProcessing" / "study";
+    for (const char* file : {"results.csv", "results.md", "study.gp"})
+    {
+        CHECK(fs::exists(study / file));
+    }
+    const auto rows = readCsv(study / "results.csv");
+    REQUIRE(rows.size() == 4);
+    for (const auto& row : rows)
+    {
+        INFO(row.at("variant"));
+        CHECK(row.at("status") == "finished");
+        CHECK(std::stod(row.at("particles")) == (row.at("resolution") == "n20" ? 20 : 40));
+        CHECK(std::stod(row.at("usPerParticleStep")) > 0.0);
+        const double tipError = std::stod(row.at("tipError"));
+        CHECK(tipError > 0.0);
+        CHECK(tipError < 1.0);
+        CHECK(std::stod(row.at("energyDrift")) < 1e-2);
+        const double self = std::stod(row.at("selfConvergence"));
+        if (row.at("resolution") == "n40")
+        {
+            CHECK(self == 0.0); // its own reference
+        }
+        else
+        {
+            // 20 against 40 particles: differences of a fraction of the 0.94 mm amplitude.
+            CHECK(self > 1e-3);
+            CHECK(self < 0.94);
+        }
+        CHECK((std::stod(row.at("againstOne")) == 0.0) == (row.at("variant") == "n40_TLnone"));
+    }
+
+    // A second run reuses every finished variant.
+    REQUIRE(runProcess("sphStudy", {"-case", caseDir.string()}, &output) == 0);
+    std::size_t reused = 0;
+    for (auto at = output.find("done earlier"); at != std::string::npos;
+         at = output.find("done earlier", at + 1))
+    {
+        ++reused;
+    }
+    CHECK(reused == 4);
+}
+
+TEST_CASE("sphStudy reports mistakes in studyDict at their place", "[study][errors]")
+{
+    TempDir dir;
+    const fs::path caseDir = copyTutorial("bar1D/dykaBar", dir.path());
+    std::string text = studyDict;
+    SECTION("a reference level that does not exist")
+    {
+        text.replace(text.find("resolution n40;"), 15, "resolution n80;");
+        std::ofstream(caseDir / "system" / "studyDict") << text;
+        std::string output;
+        CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &output) == 1);
+        CHECK_THAT(output, Catch::Contains("system/studyDict:"));
+        CHECK_THAT(output, Catch::Contains("axis 'resolution' has no level 'n80'"));
+        CHECK_THAT(output, Catch::Contains("Levels: n20, n40"));
+    }
+    SECTION("both a variant and reference levels")
+    {
+        text.replace(text.find("variant n40_TLnone;"), 19,
+                     "variant n40_TLnone; referenceLevels { scheme TLnone; }");
+        std::ofstream(caseDir / "system" / "studyDict") << text;
+        std::string output;
+        CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &output) == 1);
+        CHECK_THAT(output, Catch::Contains("needs either 'variant' or 'referenceLevels'"));
+    }
+    SECTION("an unknown reference variant")
+    {
+        text.replace(text.find("variant n40_TLnone;"), 19, "variant n40_TLnon;");
+        std::ofstream(caseDir / "system" / "studyDict") << text;
+        std::string output;
+        CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &output) == 1);
+        CHECK_THAT(output, Catch::Contains("no variant 'n40_TLnon'"));
+        CHECK_THAT(output, Catch::Contains("Did you mean 'n40_TLnone'?"));
+    }
+}
