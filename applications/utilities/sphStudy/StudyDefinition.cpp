@@ -42,7 +42,13 @@ Schema studySchema()
                                   "referenceVariant | referenceFile; ... }; the first is plotted"))
         .add(Key::dict("plot", "{ groupBy AXIS; along AXIS; }: one line per level of groupBy, "
                                "connecting the levels of along")
-                 .optional());
+                 .optional())
+        .add(Key::dict("stable", "{ METRIC { min X; max Y; } ... }: a finished run is stable "
+                                 "when every bound holds (the report's verdict column)")
+                 .optional())
+        .add(Key::boolean("rank", "list the variants with the best first metric for their "
+                                  "wall time (no for stability studies)")
+                 .defaultValue("yes"));
 }
 
 Schema levelSchema()
@@ -273,6 +279,48 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
         if (q.has("along"))
         {
             study.along = q.word("along");
+        }
+    }
+    study.rank = p.boolean("rank");
+    if (p.has("stable"))
+    {
+        std::vector<std::string> metricNames;
+        for (const auto& metric : study.metrics)
+        {
+            metricNames.push_back(metric.name);
+        }
+        for (const Entry& entry : p.dict("stable").entries())
+        {
+            if (!entry.isDict() ||
+                std::find(metricNames.begin(), metricNames.end(), entry.key()) ==
+                    metricNames.end())
+            {
+                throw InputError(entry.keyLocation(),
+                                 "stable: '" + entry.key() +
+                                     "' must be one of the metrics, as { min X; max Y; }",
+                                 {"valid metrics: " + joinSorted(metricNames),
+                                  didYouMean(entry.key(), metricNames)});
+            }
+            const Params q = validate(Schema()
+                                          .add(Key::real("min", "lowest stable value").optional())
+                                          .add(Key::real("max", "highest stable value").optional()),
+                                      entry.dict(), "a stability bound");
+            if (!q.has("min") && !q.has("max"))
+            {
+                throw InputError(entry.keyLocation(),
+                                 "stable: '" + entry.key() + "' needs 'min', 'max' or both");
+            }
+            StabilityBound bound;
+            bound.metric = entry.key();
+            if (q.has("min"))
+            {
+                bound.min = q.real("min");
+            }
+            if (q.has("max"))
+            {
+                bound.max = q.real("max");
+            }
+            study.stable.push_back(bound);
         }
     }
     return study;

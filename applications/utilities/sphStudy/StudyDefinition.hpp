@@ -26,6 +26,12 @@
 //                  referenceColumn 2; norm rms; }
 //   }
 //   plot { groupBy scheme; along resolution; }
+//   stable                      // optional: the verdict column (every bound must hold)
+//   {
+//       maxIndicator { max 0.1; }
+//       minDistance  { min 0.5; }
+//   }
+//   rank     no;                // list the error-for-time Pareto front (default yes)
 //
 // A level's `particles` overrides go to sphParticles, its `solver` overrides to sphSolid, each
 // as one -set argument. Variant names join the level names with '_' in axis order.
@@ -33,6 +39,7 @@
 #include "core/Dictionary.hpp"
 
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -70,6 +77,14 @@ struct StudyMetric
     SourceLocation where;
 };
 
+// A bound on one metric that a finished run must meet to be called stable.
+struct StabilityBound
+{
+    std::string metric;
+    double min = -std::numeric_limits<double>::infinity();
+    double max = std::numeric_limits<double>::infinity();
+};
+
 struct StudyVariant
 {
     std::string name;
@@ -87,6 +102,8 @@ struct StudyDefinition
     long threads = 0;
     std::string groupBy; // axis giving one line per level
     std::string along;   // axis along which the lines connect points
+    std::vector<StabilityBound> stable; // empty: no verdict column
+    bool rank = true;                   // report the Pareto front of the first metric
 
     // Reads and validates system/studyDict.
     static StudyDefinition read(const Dictionary& studyDict);

@@ -43,6 +43,86 @@ std::string csvText(std::string text)
     return "\"" + text + "\"";
 }
 
+// "stable", "failed", or "unstable: <the first bound that does not hold>".
+std::string verdictOf(const StudyDefinition& study, const VariantResult& result)
+{
+    if (result.status != "finished")
+    {
+        return "failed";
+    }
+    for (const auto& bound : study.stable)
+    {
+        const double value = result.metrics.at(bound.metric);
+        if (std::isnan(value))
+        {
+            return "unstable: " + bound.metric + " not measured";
+        }
+        if (value < bound.min)
+        {
+            return "unstable: " + bound.metric + " " + number(value) + " < " + number(bound.min);
+        }
+        if (value > bound.max)
+        {
+            return "unstable: " + bound.metric + " " + number(value) + " > " + number(bound.max);
+        }
+    }
+    return "stable";
+}
+
+// Per level of the groupBy axis: how many of its runs are stable, and which are not.
+void writeVerdictSummary(std::ostringstream& md, const StudyDefinition& study,
+                         const std::vector<VariantResult>& results, std::size_t group)
+{
+    md << "\n**Verdict of each " << study.groupBy << "** (stable = finished, and";
+    for (std::size_t i = 0; i < study.stable.size(); ++i)
+    {
+        const auto& bound = study.stable[i];
+        md << (i == 0 ? " " : ", ") << bound.metric;
+        if (std::isfinite(bound.min))
+        {
+            md << " ≥ " << number(bound.min);
+        }
+        if (std::isfinite(bound.min) && std::isfinite(bound.max))
+        {
+            md << " and";
+        }
+        if (std::isfinite(bound.max))
+        {
+            md << " ≤ " << number(bound.max);
+        }
+    }
+    md << "):\n\n";
+    for (const auto& level : study.axes[group].levels)
+    {
+        std::size_t runs = 0;
+        std::size_t stable = 0;
+        std::string others;
+        for (const auto& r : results)
+        {
+            if (r.variant.levels[group] != level.name)
+            {
+                continue;
+            }
+            ++runs;
+            const std::string verdict = verdictOf(study, r);
+            if (verdict == "stable")
+            {
+                ++stable;
+            }
+            else
+            {
+                others += (others.empty() ? "; not: " : ", ") + r.variant.name + " (" + verdict +
+                          ")";
+            }
+        }
+        md << "- " << level.name << ": stable in " << stable << " of " << runs << " run"
+           << (runs == 1 ? "" : "s") << others << "\n";
+    }
+}
+
+void writePlots(const std::filesystem::path& studyDir, const StudyDefinition& study,
+                const std::vector<VariantResult>& results, std::size_t group);
+
 } // namespace
 
 void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefinition& study,
@@ -62,7 +142,7 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
     {
         csv << "," << metric.name;
     }
-    csv << ",failure\n";
+    csv << (study.stable.empty() ? "" : ",verdict") << ",failure\n";
     for (const auto& r : results)
     {
         csv << r.variant.name;
@@ -76,6 +156,10 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
         for (const auto& metric : study.metrics)
         {
             csv << "," << csvNumber(r.metrics.at(metric.name));
+        }
+        if (!study.stable.empty())
+        {
+            csv << "," << csvText(verdictOf(study, r));
         }
         csv << "," << csvText(r.failure) << "\n";
     }
@@ -93,8 +177,9 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
     {
         md << " " << metric.name << " |";
     }
-    md << "\n|" << std::string(" --- |").c_str();
-    for (std::size_t i = 0; i < study.axes.size() + 5 + study.metrics.size(); ++i)
+    const bool verdicts = !study.stable.empty();
+    md << (verdicts ? " verdict |" : "") << "\n| --- |";
+    for (std::size_t i = 0; i < study.axes.size() + 5 + study.metrics.size() + verdicts; ++i)
     {
         md << " --- |";
     }
@@ -113,7 +198,18 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
         {
             md << " " << number(r.metrics.at(metric.name)) << " |";
         }
-        md << "\n";
+        md << (verdicts ? " " + verdictOf(study, r) + " |" : std::string()) << "\n";
+    }
+    const std::size_t group = study.axisIndex(study.groupBy);
+    if (verdicts)
+    {
+        writeVerdictSummary(md, study, results, group);
+    }
+    if (!study.rank)
+    {
+        writeTextAtomically(studyDir / "results.md", md.str());
+        writePlots(studyDir, study, results, group);
+        return;
     }
     // The Pareto front: no other finished variant is both faster and more accurate.
     std::vector<const VariantResult*> finished;
@@ -141,7 +237,6 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
                << number(r->wallSeconds) << " s\n";
         }
     }
-    const std::size_t group = study.axisIndex(study.groupBy);
     md << "\n**Best " << primary << " of each " << study.groupBy << "** (and its cost):\n\n";
     for (const auto& level : study.axes[group].levels)
     {
@@ -176,7 +271,16 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
         md << "\n";
     }
     writeTextAtomically(studyDir / "results.md", md.str());
+    writePlots(studyDir, study, results, group);
+}
 
+namespace
+{
+
+void writePlots(const std::filesystem::path& studyDir, const StudyDefinition& study,
+                const std::vector<VariantResult>& results, std::size_t group)
+{
+    const std::string primary = study.metrics.front().name;
     // Plot data: one line per level of groupBy and of the axes other than `along`, through the
     // levels of `along`.
     const std::size_t along = study.axisIndex(study.along);
@@ -245,5 +349,7 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
         }
     }
 }
+
+} // namespace
 
 } // namespace sph

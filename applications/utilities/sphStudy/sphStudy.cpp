@@ -38,8 +38,12 @@ int study(int argc, char** argv)
         "sphStudy",
         "runs the variants of system/studyDict (e.g. resolution x scheme x Courant number) on "
         "a case and tabulates error against cost: postProcessing/study/results.csv, results.md, "
-        "errorVsTime.png, errorVsParticles.png. Finished variants are kept: an interrupted study "
-        "resumes. -dryRun lists the variants without running them.");
+        "errorVsTime.png, errorVsParticles.png. Metrics: an exactSolution function object, a "
+        "summary.json value, a column against a reference variant (a fixed one, or the one that "
+        "differs in given levels) or a reference file. An optional 'stable' dictionary of "
+        "metric bounds adds a verdict per run. Finished variants are kept: an interrupted study "
+        "resumes. -dryRun lists the variants without running them. Keys: see the comment at the "
+        "top of applications/utilities/sphStudy/StudyDefinition.hpp and the README.");
     commandLine.enableModelOptions(false, true, true);
     if (!commandLine.parse(argc, argv))
     {

@@ -47,6 +47,7 @@ metrics
     }
 }
 plot { groupBy scheme; along resolution; }
+stable { selfConvergence { max 1e-3; } }    // only the reference resolution passes
 )";
 
 // results.csv as rows of name -> value.
@@ -122,7 +123,19 @@ TEST_CASE("sphStudy runs every variant, measures, reports and resumes", "[study]
             CHECK(self < 0.94);
         }
         CHECK((std::stod(row.at("againstOne")) == 0.0) == (row.at("variant") == "n40_TLnone"));
+        if (row.at("resolution") == "n40")
+        {
+            CHECK(row.at("verdict") == "\"stable\"");
+        }
+        else
+        {
+            CHECK_THAT(row.at("verdict"), Catch::Contains("unstable: selfConvergence"));
+        }
     }
+    std::stringstream markdown;
+    markdown << std::ifstream(study / "results.md").rdbuf();
+    CHECK_THAT(markdown.str(), Catch::Contains("- ULgradF: stable in 1 of 2 runs; not: n20_ULgradF"));
+    CHECK_THAT(markdown.str(), Catch::Contains("**Best tipError for the wall time**"));
 
     // A second run reuses every finished variant.
     REQUIRE(runProcess("sphStudy", {"-case", caseDir.string()}, &output) == 0);
@@ -167,5 +180,14 @@ TEST_CASE("sphStudy reports mistakes in studyDict at their place", "[study][erro
         CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &output) == 1);
         CHECK_THAT(output, Catch::Contains("no variant 'n40_TLnon'"));
         CHECK_THAT(output, Catch::Contains("Did you mean 'n40_TLnone'?"));
+    }
+    SECTION("a stability bound on a metric that does not exist")
+    {
+        text.replace(text.find("stable { selfConvergence"), 24, "stable { selfConvergenc");
+        std::ofstream(caseDir / "system" / "studyDict") << text;
+        std::string output;
+        CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &output) == 1);
+        CHECK_THAT(output, Catch::Contains("stable: 'selfConvergenc' must be one of the metrics"));
+        CHECK_THAT(output, Catch::Contains("Did you mean 'selfConvergence'?"));
     }
 }
