@@ -301,7 +301,7 @@ void writePlots(const std::filesystem::path& studyDir, const StudyDefinition& st
     std::filesystem::create_directories(plotDir);
     std::ostringstream gp;
     gp << "# gnuplot script written by sphStudy: " << primary << " against cost\n"
-       << "set terminal pngcairo size 1100,750 font 'Sans,10'\n"
+       << "set terminal pngcairo size 1100,750 font 'Sans,10' noenhanced\n"
        << "set logscale xy\nset grid\nset key outside right\nset datafile missing 'NaN'\n"
        << "set ylabel '" << primary << "'\n";
     std::string plots;

@@ -7,6 +7,8 @@
 // Velocity fields: uniform (the default type), rotation, cantileverMode.
 // Displacement fields (x = X + u(X) at t = 0): affine, random, checkerboard.
 // Both are functions of the initial position X (and the particle's index, for `random`).
+// Each type is in its own file: UniformVelocity.cpp, RotationVelocity.cpp, CantileverMode.cpp,
+// AffineDisplacement.cpp, RandomDisplacement.cpp, CheckerboardDisplacement.cpp.
 
 #include "core/Registry.hpp"
 #include "particles/Types.hpp"

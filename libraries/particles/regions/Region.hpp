@@ -4,7 +4,8 @@
 //
 //   region { type box; min (0 0); max (0.01 0.02); }
 //
-// Types: all, box, sphere, halfSpace, nearest (the one particle closest to a point).
+// Types: all, box, sphere, halfSpace, nearest (the one particle closest to a point); each in its
+// own file: AllRegion.cpp, BoxRegion.cpp, SphereRegion.cpp, HalfSpaceRegion.cpp, NearestRegion.cpp.
 
 #include "core/Registry.hpp"
 #include "particles/Types.hpp"
