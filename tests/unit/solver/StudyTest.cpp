@@ -152,41 +152,41 @@ TEST_CASE("sphStudy reports mistakes in studyDict at their place", "[study][erro
 {
     TempDir dir;
     const fs::path caseDir = copyTutorial("bar1D/dykaBar", dir.path());
-    std::string text = studyDict;
-    SECTION("a reference level that does not exist")
+    // The output of `sphStudy -dryRun` on studyDict with `wrong` replaced by `edit`; exit code 1.
+    const auto dryRunWith = [&](const std::string& wrong, const std::string& edit)
     {
-        text.replace(text.find("resolution n40;"), 15, "resolution n80;");
+        std::string text = studyDict;
+        const auto at = text.find(wrong);
+        REQUIRE(at != std::string::npos);
+        text.replace(at, wrong.size(), edit);
         std::ofstream(caseDir / "system" / "studyDict") << text;
         std::string output;
         CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &output) == 1);
+        return output;
+    };
+    SECTION("a reference level that does not exist")
+    {
+        const std::string output = dryRunWith("resolution n40;", "resolution n80;");
         CHECK_THAT(output, Catch::Contains("system/studyDict:"));
         CHECK_THAT(output, Catch::Contains("axis 'resolution' has no level 'n80'"));
         CHECK_THAT(output, Catch::Contains("Levels: n20, n40"));
     }
     SECTION("both a variant and reference levels")
     {
-        text.replace(text.find("variant n40_TLnone;"), 19,
-                     "variant n40_TLnone; referenceLevels { scheme TLnone; }");
-        std::ofstream(caseDir / "system" / "studyDict") << text;
-        std::string output;
-        CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &output) == 1);
+        const std::string output = dryRunWith(
+            "variant n40_TLnone;", "variant n40_TLnone; referenceLevels { scheme TLnone; }");
         CHECK_THAT(output, Catch::Contains("needs either 'variant' or 'referenceLevels'"));
     }
     SECTION("an unknown reference variant")
     {
-        text.replace(text.find("variant n40_TLnone;"), 19, "variant n40_TLnon;");
-        std::ofstream(caseDir / "system" / "studyDict") << text;
-        std::string output;
-        CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &output) == 1);
+        const std::string output = dryRunWith("variant n40_TLnone;", "variant n40_TLnon;");
         CHECK_THAT(output, Catch::Contains("no variant 'n40_TLnon'"));
         CHECK_THAT(output, Catch::Contains("Did you mean 'n40_TLnone'?"));
     }
     SECTION("a stability bound on a metric that does not exist")
     {
-        text.replace(text.find("stable { selfConvergence"), 24, "stable { selfConvergenc");
-        std::ofstream(caseDir / "system" / "studyDict") << text;
-        std::string output;
-        CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &output) == 1);
+        const std::string output =
+            dryRunWith("stable { selfConvergence", "stable { selfConvergenc");
         CHECK_THAT(output, Catch::Contains("stable: 'selfConvergenc' must be one of the metrics"));
         CHECK_THAT(output, Catch::Contains("Did you mean 'selfConvergence'?"));
     }
