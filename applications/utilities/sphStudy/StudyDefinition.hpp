@@ -26,7 +26,7 @@
 //                  referenceColumn 2; norm rms; }
 //   }
 //   plot { groupBy scheme; along resolution; }
-//   stable                      // optional: the verdict column (every bound must hold)
+//   stable                      // optional: a verdict per run, pass when every bound holds
 //   {
 //       maxIndicator { max 0.1; }
 //       minDistance  { min 0.5; }

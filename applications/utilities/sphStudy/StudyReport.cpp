@@ -43,7 +43,8 @@ std::string csvText(std::string text)
     return "\"" + text + "\"";
 }
 
-// "stable", "failed", or "unstable: <the first bound that does not hold>".
+// "pass" (every bound of `stable` holds), "failed" (the run stopped), or
+// "fail: <the first bound that does not hold>".
 std::string verdictOf(const StudyDefinition& study, const VariantResult& result)
 {
     if (result.status != "finished")
@@ -55,25 +56,25 @@ std::string verdictOf(const StudyDefinition& study, const VariantResult& result)
         const double value = result.metrics.at(bound.metric);
         if (std::isnan(value))
         {
-            return "unstable: " + bound.metric + " not measured";
+            return "fail: " + bound.metric + " not measured";
         }
         if (value < bound.min)
         {
-            return "unstable: " + bound.metric + " " + number(value) + " < " + number(bound.min);
+            return "fail: " + bound.metric + " " + number(value) + " < " + number(bound.min);
         }
         if (value > bound.max)
         {
-            return "unstable: " + bound.metric + " " + number(value) + " > " + number(bound.max);
+            return "fail: " + bound.metric + " " + number(value) + " > " + number(bound.max);
         }
     }
-    return "stable";
+    return "pass";
 }
 
 // Per level of the groupBy axis: how many of its runs are stable, and which are not.
 void writeVerdictSummary(std::ostringstream& md, const StudyDefinition& study,
                          const std::vector<VariantResult>& results, std::size_t group)
 {
-    md << "\n**Verdict of each " << study.groupBy << "** (stable = finished, and";
+    md << "\n**Verdict of each " << study.groupBy << "** (pass = the run finished, and";
     for (std::size_t i = 0; i < study.stable.size(); ++i)
     {
         const auto& bound = study.stable[i];
@@ -105,7 +106,7 @@ void writeVerdictSummary(std::ostringstream& md, const StudyDefinition& study,
             }
             ++runs;
             const std::string verdict = verdictOf(study, r);
-            if (verdict == "stable")
+            if (verdict == "pass")
             {
                 ++stable;
             }
@@ -115,7 +116,7 @@ void writeVerdictSummary(std::ostringstream& md, const StudyDefinition& study,
                           ")";
             }
         }
-        md << "- " << level.name << ": stable in " << stable << " of " << runs << " run"
+        md << "- " << level.name << ": passes in " << stable << " of " << runs << " run"
            << (runs == 1 ? "" : "s") << others << "\n";
     }
 }

@@ -125,16 +125,16 @@ TEST_CASE("sphStudy runs every variant, measures, reports and resumes", "[study]
         CHECK((std::stod(row.at("againstOne")) == 0.0) == (row.at("variant") == "n40_TLnone"));
         if (row.at("resolution") == "n40")
         {
-            CHECK(row.at("verdict") == "\"stable\"");
+            CHECK(row.at("verdict") == "\"pass\"");
         }
         else
         {
-            CHECK_THAT(row.at("verdict"), Catch::Contains("unstable: selfConvergence"));
+            CHECK_THAT(row.at("verdict"), Catch::Contains("fail: selfConvergence"));
         }
     }
     std::stringstream markdown;
     markdown << std::ifstream(study / "results.md").rdbuf();
-    CHECK_THAT(markdown.str(), Catch::Contains("- ULgradF: stable in 1 of 2 runs; not: n20_ULgradF"));
+    CHECK_THAT(markdown.str(), Catch::Contains("- ULgradF: passes in 1 of 2 runs; not: n20_ULgradF"));
     CHECK_THAT(markdown.str(), Catch::Contains("**Best tipError for the wall time**"));
 
     // A second run reuses every finished variant.
