@@ -1,10 +1,9 @@
 #include "DictionaryParser.hpp"
 
+#include "DictionaryLexer.hpp"
 #include "InputError.hpp"
 #include "Suggest.hpp"
 
-#include <cctype>
-#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -13,283 +12,6 @@ namespace sph
 
 namespace
 {
-
-struct Token
-{
-    enum class Kind
-    {
-        Word,
-        Number,
-        String,
-        Variable,  // $name
-        Directive, // #include
-        OpenBrace,
-        CloseBrace,
-        OpenParen,
-        CloseParen,
-        Semicolon,
-        End
-    };
-    Kind kind = Kind::End;
-    std::string text;
-    double number = 0.0;
-    SourceLocation where;
-    int endLine = 0;   // line of the last character
-    int endColumn = 0; // column just after the last character
-};
-
-bool isDelimiter(char c)
-{
-    return std::isspace(static_cast<unsigned char>(c)) || c == '{' || c == '}' || c == '(' ||
-           c == ')' || c == ';' || c == '"';
-}
-
-// A word is a number when the whole of it reads as one (decimal only: no hex, inf or nan).
-bool readNumber(const std::string& text, double& value)
-{
-    const char first = text.front();
-    if (!(std::isdigit(static_cast<unsigned char>(first)) || first == '-' || first == '+' ||
-          first == '.'))
-    {
-        return false;
-    }
-    for (char c : text)
-    {
-        if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.' ||
-              c == 'e' || c == 'E'))
-        {
-            return false;
-        }
-    }
-    char* end = nullptr;
-    value = std::strtod(text.c_str(), &end);
-    return end == text.c_str() + text.size();
-}
-
-class Lexer
-{
-public:
-    Lexer(std::shared_ptr<const SourceText> source, std::string text, int line = 1, int column = 1,
-          std::string endName = "")
-        : source_(std::move(source)), text_(std::move(text)), line_(line), column_(column),
-          endName_(std::move(endName))
-    {
-    }
-
-    const Token& peek()
-    {
-        if (!peeked_)
-        {
-            next_ = scan();
-            peeked_ = true;
-        }
-        return next_;
-    }
-
-    Token take()
-    {
-        peek();
-        peeked_ = false;
-        return next_;
-    }
-
-    const std::shared_ptr<const SourceText>& source() const { return source_; }
-
-    SourceLocation at(int line, int column, int length = 1) const
-    {
-        return SourceLocation{source_, line, column, length};
-    }
-
-private:
-    char current() const { return pos_ < text_.size() ? text_[pos_] : '\0'; }
-    char ahead() const { return pos_ + 1 < text_.size() ? text_[pos_ + 1] : '\0'; }
-    bool atEnd() const { return pos_ >= text_.size(); }
-
-    void advance()
-    {
-        if (current() == '\n')
-        {
-            ++line_;
-            column_ = 1;
-        }
-        else
-        {
-            ++column_;
-        }
-        ++pos_;
-    }
-
-    void skipSpaceAndComments()
-    {
-        while (!atEnd())
-        {
-            if (std::isspace(static_cast<unsigned char>(current())))
-            {
-                advance();
-            }
-            else if (current() == '/' && ahead() == '/')
-            {
-                while (!atEnd() && current() != '\n')
-                {
-                    advance();
-                }
-            }
-            else if (current() == '/' && ahead() == '*')
-            {
-                const int line = line_;
-                const int column = column_;
-                advance();
-                advance();
-                while (!atEnd() && !(current() == '*' && ahead() == '/'))
-                {
-                    advance();
-                }
-                if (atEnd())
-                {
-                    throw InputError(at(line, column, 2), "unterminated comment: '/*' has no '*/'",
-                                     {"Close the comment with '*/'."});
-                }
-                advance();
-                advance();
-            }
-            else
-            {
-                return;
-            }
-        }
-    }
-
-    Token scan()
-    {
-        skipSpaceAndComments();
-        Token token;
-        token.where = at(line_, column_);
-        if (atEnd())
-        {
-            token.kind = Token::Kind::End;
-            token.text = endName_; // how messages name the end ("" = the end of the file)
-            token.endLine = line_;
-            token.endColumn = column_;
-            return token;
-        }
-        const char c = current();
-        const auto single = [&](Token::Kind kind)
-        {
-            token.kind = kind;
-            token.text = std::string(1, c);
-            advance();
-            token.endLine = token.where.line;
-            token.endColumn = token.where.column + 1;
-            return token;
-        };
-        switch (c)
-        {
-        case '{':
-            return single(Token::Kind::OpenBrace);
-        case '}':
-            return single(Token::Kind::CloseBrace);
-        case '(':
-            return single(Token::Kind::OpenParen);
-        case ')':
-            return single(Token::Kind::CloseParen);
-        case ';':
-            return single(Token::Kind::Semicolon);
-        case '"':
-            return scanString(token);
-        default:
-            return scanWord(token);
-        }
-    }
-
-    Token scanString(Token& token)
-    {
-        advance(); // opening quote
-        std::string value;
-        while (!atEnd() && current() != '"' && current() != '\n')
-        {
-            if (current() == '\\' && (ahead() == '"' || ahead() == '\\'))
-            {
-                advance();
-            }
-            value += current();
-            advance();
-        }
-        if (current() != '"')
-        {
-            throw InputError(token.where, "unterminated string: the closing '\"' is missing",
-                             {"Strings must open and close on the same line."});
-        }
-        advance();
-        token.kind = Token::Kind::String;
-        token.text = std::move(value);
-        token.endLine = line_;
-        token.endColumn = column_;
-        token.where.length = column_ - token.where.column;
-        return token;
-    }
-
-    Token scanWord(Token& token)
-    {
-        std::string word;
-        while (!atEnd() && !isDelimiter(current()) &&
-               !(current() == '/' && (ahead() == '/' || ahead() == '*')))
-        {
-            word += current();
-            advance();
-        }
-        token.text = word;
-        token.endLine = line_;
-        token.endColumn = column_;
-        token.where.length = static_cast<int>(word.size());
-        if (word[0] == '$')
-        {
-            token.kind = Token::Kind::Variable;
-            token.text = word.substr(1);
-            if (token.text.empty())
-            {
-                throw InputError(token.where, "'$' must be followed by the name of an entry",
-                                 {"Write $name to copy the value of an earlier entry 'name'."});
-            }
-        }
-        else if (word[0] == '#')
-        {
-            token.kind = Token::Kind::Directive;
-        }
-        else if (readNumber(word, token.number))
-        {
-            token.kind = Token::Kind::Number;
-        }
-        else
-        {
-            token.kind = Token::Kind::Word;
-        }
-        return token;
-    }
-
-    std::shared_ptr<const SourceText> source_;
-    std::string text_;
-    std::size_t pos_ = 0;
-    int line_ = 1;
-    int column_ = 1;
-    bool peeked_ = false;
-    Token next_;
-    std::string endName_;
-};
-
-std::string describe(const Token& token)
-{
-    switch (token.kind)
-    {
-    case Token::Kind::End:
-        return token.text.empty() ? "the end of the file" : token.text;
-    case Token::Kind::String:
-        return "string \"" + token.text + "\"";
-    case Token::Kind::Variable:
-        return "'$" + token.text + "'";
-    default:
-        return "'" + token.text + "'";
-    }
-}
 
 std::string readFile(const std::filesystem::path& path)
 {
@@ -371,7 +93,7 @@ private:
                 parseEntry(lexer, dict);
                 break;
             default:
-                throw InputError(token.where, "expected a key, found " + describe(token),
+                throw InputError(token.where, "expected a key, found " + describeToken(token),
                                  {"An entry is 'key value;' or 'name { ... }'."});
             }
         }
@@ -410,7 +132,7 @@ private:
                 throw InputError(lexer.at(last.endLine, last.endColumn),
                                  "missing ';' after the value of '" + key.text + "'",
                                  {"Every 'key value' entry ends with ';' (found " +
-                                  describe(token) + " next)."});
+                                  describeToken(token) + " next)."});
             }
             if (token.kind == Token::Kind::Variable && items.empty())
             {
@@ -477,9 +199,9 @@ private:
                 if (inner.kind == Token::Kind::End || inner.kind == Token::Kind::Semicolon ||
                     inner.kind == Token::Kind::OpenBrace || inner.kind == Token::Kind::CloseBrace)
                 {
-                    throw InputError(token.where,
-                                     "unterminated '(': the list opened here has no ')'",
-                                     {"Found " + describe(inner) + " before the closing ')'."});
+                    throw InputError(
+                        token.where, "unterminated '(': the list opened here has no ')'",
+                        {"Found " + describeToken(inner) + " before the closing ')'."});
                 }
                 appendItem(lexer, content, scope);
             }
@@ -494,7 +216,7 @@ private:
             break;
         }
         default:
-            throw InputError(token.where, "unexpected " + describe(token) + " in a value",
+            throw InputError(token.where, "unexpected " + describeToken(token) + " in a value",
                              {"A value is made of words, numbers, \"strings\" and (lists)."});
         }
         if (last)
@@ -573,7 +295,7 @@ private:
         if (file.kind != Token::Kind::String)
         {
             throw InputError(file.where,
-                             "#include needs a quoted file name, found " + describe(file),
+                             "#include needs a quoted file name, found " + describeToken(file),
                              {"Write #include \"fileName\" (relative to this file)."});
         }
         const std::filesystem::path here = path_.parent_path();

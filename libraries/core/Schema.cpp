@@ -1,12 +1,13 @@
 #include "Schema.hpp"
 
 #include "DictionaryParser.hpp"
+#include "Format.hpp"
 #include "InputError.hpp"
 #include "Suggest.hpp"
+#include "ValueReader.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 namespace sph
@@ -49,17 +50,50 @@ Key::Key(std::string name, ValueType type, std::string doc)
 {
 }
 
-Key Key::real(std::string name, std::string doc) { return {std::move(name), ValueType::Real, std::move(doc)}; }
-Key Key::integer(std::string name, std::string doc) { return {std::move(name), ValueType::Integer, std::move(doc)}; }
-Key Key::boolean(std::string name, std::string doc) { return {std::move(name), ValueType::Bool, std::move(doc)}; }
-Key Key::word(std::string name, std::string doc) { return {std::move(name), ValueType::Word, std::move(doc)}; }
-Key Key::string(std::string name, std::string doc) { return {std::move(name), ValueType::String, std::move(doc)}; }
-Key Key::vector(std::string name, std::string doc) { return {std::move(name), ValueType::Vector, std::move(doc)}; }
-Key Key::realList(std::string name, std::string doc) { return {std::move(name), ValueType::RealList, std::move(doc)}; }
-Key Key::wordList(std::string name, std::string doc) { return {std::move(name), ValueType::WordList, std::move(doc)}; }
-Key Key::stringList(std::string name, std::string doc) { return {std::move(name), ValueType::StringList, std::move(doc)}; }
-Key Key::vectorList(std::string name, std::string doc) { return {std::move(name), ValueType::VectorList, std::move(doc)}; }
-Key Key::dict(std::string name, std::string doc) { return {std::move(name), ValueType::Dict, std::move(doc)}; }
+Key Key::real(std::string name, std::string doc)
+{
+    return {std::move(name), ValueType::Real, std::move(doc)};
+}
+Key Key::integer(std::string name, std::string doc)
+{
+    return {std::move(name), ValueType::Integer, std::move(doc)};
+}
+Key Key::boolean(std::string name, std::string doc)
+{
+    return {std::move(name), ValueType::Bool, std::move(doc)};
+}
+Key Key::word(std::string name, std::string doc)
+{
+    return {std::move(name), ValueType::Word, std::move(doc)};
+}
+Key Key::string(std::string name, std::string doc)
+{
+    return {std::move(name), ValueType::String, std::move(doc)};
+}
+Key Key::vector(std::string name, std::string doc)
+{
+    return {std::move(name), ValueType::Vector, std::move(doc)};
+}
+Key Key::realList(std::string name, std::string doc)
+{
+    return {std::move(name), ValueType::RealList, std::move(doc)};
+}
+Key Key::wordList(std::string name, std::string doc)
+{
+    return {std::move(name), ValueType::WordList, std::move(doc)};
+}
+Key Key::stringList(std::string name, std::string doc)
+{
+    return {std::move(name), ValueType::StringList, std::move(doc)};
+}
+Key Key::vectorList(std::string name, std::string doc)
+{
+    return {std::move(name), ValueType::VectorList, std::move(doc)};
+}
+Key Key::dict(std::string name, std::string doc)
+{
+    return {std::move(name), ValueType::Dict, std::move(doc)};
+}
 
 Key& Key::defaultValue(std::string text)
 {
@@ -105,22 +139,6 @@ Key& Key::size(int components)
     size_ = components;
     return *this;
 }
-
-namespace
-{
-
-std::string formatNumber(double value)
-{
-    if (std::isinf(value))
-    {
-        return value > 0 ? "inf" : "-inf";
-    }
-    std::ostringstream out;
-    out << value;
-    return out.str();
-}
-
-} // namespace
 
 std::string Key::rangeText() const
 {
@@ -205,293 +223,6 @@ std::vector<std::string> Schema::requiredNames() const
     return result;
 }
 
-namespace
-{
-
-// Reads one value of `key` from `items` into `value`; `owner` names the dictionary in messages.
-class ValueReader
-{
-public:
-    ValueReader(const Key& key, const ValidationContext& context, std::string owner)
-        : key_(key), context_(context), owner_(std::move(owner))
-    {
-    }
-
-    void read(const std::vector<Item>& items, const SourceLocation& keyWhere, bool isDefault,
-              double& real, long& integer, bool& boolean, std::string& text,
-              std::vector<double>& reals, std::vector<std::string>& words,
-              std::vector<std::vector<double>>& vectors)
-    {
-        isDefault_ = isDefault;
-        if (items.empty())
-        {
-            throw InputError(keyWhere, "'" + key_.name() + "' has no value");
-        }
-        if (items.size() > 1)
-        {
-            throw InputError(items[1].location(),
-                             "'" + key_.name() + "' takes one value (" + expected() + "), found " +
-                                 std::to_string(items.size()) + " items",
-                             {"Is a ';' missing after " + items[0].toText() + "?"});
-        }
-        const Item& item = items[0];
-        switch (key_.type())
-        {
-        case ValueType::Real:
-            real = number(item);
-            break;
-        case ValueType::Integer:
-            integer = wholeNumber(item);
-            break;
-        case ValueType::Bool:
-            boolean = truthValue(item);
-            break;
-        case ValueType::Word:
-            text = wordValue(item);
-            break;
-        case ValueType::String:
-            text = stringValue(item);
-            break;
-        case ValueType::Vector:
-            reals = vectorValue(item, key_.fixedSize() ? key_.fixedSize() : context_.dimension);
-            break;
-        case ValueType::RealList:
-            for (const Item& element : listItems(item))
-            {
-                reals.push_back(number(element));
-            }
-            break;
-        case ValueType::WordList:
-            for (const Item& element : listItems(item))
-            {
-                words.push_back(wordValue(element));
-            }
-            break;
-        case ValueType::StringList:
-            for (const Item& element : listItems(item))
-            {
-                words.push_back(stringValue(element));
-            }
-            break;
-        case ValueType::VectorList:
-            for (const Item& element : listItems(item))
-            {
-                vectors.push_back(vectorValue(element, key_.fixedSize() ? key_.fixedSize()
-                                                                         : context_.dimension));
-            }
-            break;
-        case ValueType::Dict:
-            throw mismatch(item);
-        }
-    }
-
-    std::string expected() const
-    {
-        switch (key_.type())
-        {
-        case ValueType::Vector:
-        {
-            const int n = key_.fixedSize() ? key_.fixedSize() : context_.dimension;
-            return n > 0 ? "a vector of " + std::to_string(n) + " number" + (n == 1 ? "" : "s") +
-                               " like " + example(n)
-                         : "a vector like (0 0)";
-        }
-        case ValueType::Dict:
-            return "a dictionary { ... }";
-        case ValueType::Bool:
-            return "true or false";
-        default:
-            return "a " + toString(key_.type());
-        }
-    }
-
-    InputError mismatch(const Item& item) const
-    {
-        return InputError(item.location(),
-                          "'" + key_.name() + "' in '" + owner_ + "' must be " + expected() +
-                              ", found " + item.describe(),
-                          notes());
-    }
-
-private:
-    static std::string example(int n)
-    {
-        std::string text = "(";
-        for (int i = 0; i < n; ++i)
-        {
-            text += i ? " 0" : "0";
-        }
-        return text + ")";
-    }
-
-    std::vector<std::string> notes() const
-    {
-        std::vector<std::string> result;
-        if (!key_.doc().empty())
-        {
-            result.push_back("'" + key_.name() + "': " + key_.doc() + ".");
-        }
-        if (isDefault_)
-        {
-            result.push_back("(This is the declared default of the key: a bug in the model.)");
-        }
-        return result;
-    }
-
-    double number(const Item& item) const
-    {
-        if (item.kind() != Item::Kind::Number)
-        {
-            throw mismatch(item);
-        }
-        checkRange(item, item.number());
-        return item.number();
-    }
-
-    long wholeNumber(const Item& item) const
-    {
-        if (item.kind() != Item::Kind::Number || std::floor(item.number()) != item.number() ||
-            std::abs(item.number()) > 9.0e15)
-        {
-            throw InputError(item.location(),
-                             "'" + key_.name() + "' in '" + owner_ +
-                                 "' must be a whole number, found " + item.describe(),
-                             notes());
-        }
-        checkRange(item, item.number());
-        return static_cast<long>(item.number());
-    }
-
-    void checkRange(const Item& item, double value) const
-    {
-        if (!key_.inRange(value))
-        {
-            throw InputError(item.location(),
-                             key_.name() + " = " + item.text() + " must lie in " +
-                                 key_.rangeText(),
-                             notes());
-        }
-    }
-
-    bool truthValue(const Item& item) const
-    {
-        static const std::vector<std::string> yes{"true", "yes", "on"};
-        static const std::vector<std::string> no{"false", "no", "off"};
-        if (item.kind() == Item::Kind::Word)
-        {
-            for (const auto& w : yes)
-            {
-                if (item.text() == w)
-                {
-                    return true;
-                }
-            }
-            for (const auto& w : no)
-            {
-                if (item.text() == w)
-                {
-                    return false;
-                }
-            }
-        }
-        throw InputError(item.location(),
-                         "'" + key_.name() + "' in '" + owner_ + "' must be true or false, found " +
-                             item.describe(),
-                         {"Accepted: true/false, yes/no, on/off."});
-    }
-
-    std::string wordValue(const Item& item) const
-    {
-        if (item.kind() != Item::Kind::Word)
-        {
-            throw mismatch(item);
-        }
-        const auto& allowed = key_.allowedWords();
-        if (!allowed.empty() &&
-            std::find(allowed.begin(), allowed.end(), item.text()) == allowed.end())
-        {
-            std::vector<std::string> lines{"Valid values for '" + key_.name() + "': " +
-                                           joinSorted(allowed)};
-            const std::string hint = didYouMean(item.text(), allowed);
-            if (!hint.empty())
-            {
-                lines.push_back(hint);
-            }
-            throw InputError(item.location(),
-                             "unknown value '" + item.text() + "' for '" + key_.name() + "' in '" +
-                                 owner_ + "'",
-                             lines);
-        }
-        return item.text();
-    }
-
-    std::string stringValue(const Item& item) const
-    {
-        if (item.kind() != Item::Kind::String && item.kind() != Item::Kind::Word)
-        {
-            throw mismatch(item);
-        }
-        return item.text();
-    }
-
-    const std::vector<Item>& listItems(const Item& item) const
-    {
-        if (!item.isList())
-        {
-            throw InputError(item.location(),
-                             "'" + key_.name() + "' in '" + owner_ + "' must be a list ( ... ), found " +
-                                 item.describe(),
-                             notes());
-        }
-        return item.items();
-    }
-
-    std::vector<double> vectorValue(const Item& item, int components) const
-    {
-        if (!item.isList())
-        {
-            throw mismatch(item);
-        }
-        if (components > 0 && static_cast<int>(item.items().size()) != components)
-        {
-            std::vector<std::string> lines = notes();
-            if (!key_.fixedSize())
-            {
-                lines.insert(lines.begin(), "The case is " + std::to_string(components) +
-                                                "D (system/sphSchemes 'dimension'): vectors have " +
-                                                std::to_string(components) + " component" +
-                                                (components == 1 ? "" : "s") + ".");
-            }
-            throw InputError(item.location(),
-                             "'" + key_.name() + "' in '" + owner_ + "' must be " + expected() +
-                                 ", found " + std::to_string(item.items().size()) + " component" +
-                                 (item.items().size() == 1 ? "" : "s"),
-                             lines);
-        }
-        std::vector<double> result;
-        for (const Item& element : item.items())
-        {
-            if (element.kind() != Item::Kind::Number)
-            {
-                throw InputError(element.location(),
-                                 "'" + key_.name() + "' in '" + owner_ +
-                                     "': a vector component must be a number, found " +
-                                     element.describe(),
-                                 notes());
-            }
-            result.push_back(element.number());
-        }
-        return result;
-    }
-
-    const Key& key_;
-    const ValidationContext& context_;
-    std::string owner_;
-    bool isDefault_ = false;
-};
-
-} // namespace
-
 Params Schema::validate(const Dictionary& dict, const ValidationContext& context) const
 {
     Params params;
@@ -551,9 +282,8 @@ Params Schema::validate(const Dictionary& dict, const ValidationContext& context
             }
             else
             {
-                reader.read(entry->items(), entry->keyLocation(), false, value.real,
-                            value.integer, value.boolean, value.text, value.reals, value.words,
-                            value.vectors);
+                reader.read(entry->items(), entry->keyLocation(), false, value.real, value.integer,
+                            value.boolean, value.text, value.reals, value.words, value.vectors);
                 if (entry->items().size() == 1 && entry->items()[0].isList())
                 {
                     for (const Item& element : entry->items()[0].items())
@@ -567,8 +297,8 @@ Params Schema::validate(const Dictionary& dict, const ValidationContext& context
         {
             value.present = true;
             value.where = dict.location();
-            auto source = std::make_shared<const SourceText>(
-                "<default of '" + key.name() + "'>", *key.defaultText());
+            auto source = std::make_shared<const SourceText>("<default of '" + key.name() + "'>",
+                                                             *key.defaultText());
             std::vector<Item> items = DictionaryParser::parseValue(source, *key.defaultText(), 1);
             // A single number as the default of a vector fills every component.
             if (key.type() == ValueType::Vector && items.size() == 1 &&
@@ -579,16 +309,15 @@ Params Schema::validate(const Dictionary& dict, const ValidationContext& context
             }
             else
             {
-                reader.read(items, dict.location(), true, value.real, value.integer,
-                            value.boolean, value.text, value.reals, value.words, value.vectors);
+                reader.read(items, dict.location(), true, value.real, value.integer, value.boolean,
+                            value.text, value.reals, value.words, value.vectors);
             }
         }
         else if (key.required())
         {
             const std::vector<std::string> needed = requiredNames();
             SourceLocation where = dict.location();
-            throw InputError(where,
-                             "missing required key '" + key.name() + "' in '" + owner + "'",
+            throw InputError(where, "missing required key '" + key.name() + "' in '" + owner + "'",
                              {"(" + label + " needs: " + joinSorted(needed) + ")",
                               "'" + key.name() + "': " + key.doc() + " (" + reader.expected() +
                                   (key.hasRange() ? ", in " + key.rangeText() : "") + ")."});
@@ -628,112 +357,6 @@ std::vector<std::string> Schema::describe() const
         lines.push_back(line);
     }
     return lines;
-}
-
-// -------------------------------------------------------------------------------------- Params
-
-const Params::Value& Params::get(std::string_view key, ValueType expected) const
-{
-    for (const Value& value : values_)
-    {
-        if (value.key.name() == key)
-        {
-            if (value.key.type() != expected)
-            {
-                throw std::logic_error("model '" + context_.label + "' reads key '" +
-                                       std::string(key) + "' as " + toString(expected) +
-                                       " but declared it as " + toString(value.key.type()));
-            }
-            if (!value.present)
-            {
-                throw std::logic_error("model '" + context_.label + "' reads optional key '" +
-                                       std::string(key) + "' without checking has()");
-            }
-            return value;
-        }
-    }
-    std::vector<std::string> declared;
-    for (const Value& value : values_)
-    {
-        declared.push_back(value.key.name());
-    }
-    throw std::logic_error("model '" + context_.label + "' reads undeclared key '" +
-                           std::string(key) + "' (declared: " + joinSorted(declared) + "). " +
-                           didYouMean(key, declared));
-}
-
-double Params::real(std::string_view key) const { return get(key, ValueType::Real).real; }
-long Params::integer(std::string_view key) const { return get(key, ValueType::Integer).integer; }
-bool Params::boolean(std::string_view key) const { return get(key, ValueType::Bool).boolean; }
-const std::string& Params::word(std::string_view key) const { return get(key, ValueType::Word).text; }
-const std::string& Params::string(std::string_view key) const { return get(key, ValueType::String).text; }
-const std::vector<double>& Params::vector(std::string_view key) const { return get(key, ValueType::Vector).reals; }
-const std::vector<double>& Params::realList(std::string_view key) const { return get(key, ValueType::RealList).reals; }
-const std::vector<std::string>& Params::wordList(std::string_view key) const { return get(key, ValueType::WordList).words; }
-const std::vector<std::string>& Params::stringList(std::string_view key) const { return get(key, ValueType::StringList).words; }
-const std::vector<std::vector<double>>& Params::vectorList(std::string_view key) const { return get(key, ValueType::VectorList).vectors; }
-const Dictionary& Params::dict(std::string_view key) const { return *get(key, ValueType::Dict).dict; }
-
-bool Params::has(std::string_view key) const
-{
-    for (const Value& value : values_)
-    {
-        if (value.key.name() == key)
-        {
-            return value.present;
-        }
-    }
-    throw std::logic_error("model '" + context_.label + "' asks for undeclared key '" +
-                           std::string(key) + "'");
-}
-
-bool Params::given(std::string_view key) const
-{
-    for (const Value& value : values_)
-    {
-        if (value.key.name() == key)
-        {
-            return value.given;
-        }
-    }
-    throw std::logic_error("model '" + context_.label + "' asks for undeclared key '" +
-                           std::string(key) + "'");
-}
-
-SourceLocation Params::location(std::string_view key) const
-{
-    for (const Value& value : values_)
-    {
-        if (value.key.name() == key)
-        {
-            return value.where;
-        }
-    }
-    return source_->location();
-}
-
-SourceLocation Params::location(std::string_view key, std::size_t index) const
-{
-    for (const Value& value : values_)
-    {
-        if (value.key.name() == key)
-        {
-            return index < value.elements.size() ? value.elements[index] : value.where;
-        }
-    }
-    return source_->location();
-}
-
-void Params::fail(std::string_view key, const std::string& message,
-                  std::vector<std::string> notes) const
-{
-    throw InputError(location(key), message, std::move(notes));
-}
-
-void Params::fail(std::string_view key, std::size_t index, const std::string& message,
-                  std::vector<std::string> notes) const
-{
-    throw InputError(location(key, index), message, std::move(notes));
 }
 
 } // namespace sph

@@ -1,0 +1,148 @@
+// Params: the validated values of one dictionary (declared in Schema.hpp).
+#include "InputError.hpp"
+#include "Schema.hpp"
+#include "Suggest.hpp"
+
+#include <stdexcept>
+
+namespace sph
+{
+
+const Params::Value& Params::get(std::string_view key, ValueType expected) const
+{
+    for (const Value& value : values_)
+    {
+        if (value.key.name() == key)
+        {
+            if (value.key.type() != expected)
+            {
+                throw std::logic_error("model '" + context_.label + "' reads key '" +
+                                       std::string(key) + "' as " + toString(expected) +
+                                       " but declared it as " + toString(value.key.type()));
+            }
+            if (!value.present)
+            {
+                throw std::logic_error("model '" + context_.label + "' reads optional key '" +
+                                       std::string(key) + "' without checking has()");
+            }
+            return value;
+        }
+    }
+    std::vector<std::string> declared;
+    for (const Value& value : values_)
+    {
+        declared.push_back(value.key.name());
+    }
+    throw std::logic_error("model '" + context_.label + "' reads undeclared key '" +
+                           std::string(key) + "' (declared: " + joinSorted(declared) + "). " +
+                           didYouMean(key, declared));
+}
+
+double Params::real(std::string_view key) const
+{
+    return get(key, ValueType::Real).real;
+}
+long Params::integer(std::string_view key) const
+{
+    return get(key, ValueType::Integer).integer;
+}
+bool Params::boolean(std::string_view key) const
+{
+    return get(key, ValueType::Bool).boolean;
+}
+const std::string& Params::word(std::string_view key) const
+{
+    return get(key, ValueType::Word).text;
+}
+const std::string& Params::string(std::string_view key) const
+{
+    return get(key, ValueType::String).text;
+}
+const std::vector<double>& Params::vector(std::string_view key) const
+{
+    return get(key, ValueType::Vector).reals;
+}
+const std::vector<double>& Params::realList(std::string_view key) const
+{
+    return get(key, ValueType::RealList).reals;
+}
+const std::vector<std::string>& Params::wordList(std::string_view key) const
+{
+    return get(key, ValueType::WordList).words;
+}
+const std::vector<std::string>& Params::stringList(std::string_view key) const
+{
+    return get(key, ValueType::StringList).words;
+}
+const std::vector<std::vector<double>>& Params::vectorList(std::string_view key) const
+{
+    return get(key, ValueType::VectorList).vectors;
+}
+const Dictionary& Params::dict(std::string_view key) const
+{
+    return *get(key, ValueType::Dict).dict;
+}
+
+bool Params::has(std::string_view key) const
+{
+    for (const Value& value : values_)
+    {
+        if (value.key.name() == key)
+        {
+            return value.present;
+        }
+    }
+    throw std::logic_error("model '" + context_.label + "' asks for undeclared key '" +
+                           std::string(key) + "'");
+}
+
+bool Params::given(std::string_view key) const
+{
+    for (const Value& value : values_)
+    {
+        if (value.key.name() == key)
+        {
+            return value.given;
+        }
+    }
+    throw std::logic_error("model '" + context_.label + "' asks for undeclared key '" +
+                           std::string(key) + "'");
+}
+
+SourceLocation Params::location(std::string_view key) const
+{
+    for (const Value& value : values_)
+    {
+        if (value.key.name() == key)
+        {
+            return value.where;
+        }
+    }
+    return source_->location();
+}
+
+SourceLocation Params::location(std::string_view key, std::size_t index) const
+{
+    for (const Value& value : values_)
+    {
+        if (value.key.name() == key)
+        {
+            return index < value.elements.size() ? value.elements[index] : value.where;
+        }
+    }
+    return source_->location();
+}
+
+void Params::fail(std::string_view key, const std::string& message,
+                  std::vector<std::string> notes) const
+{
+    throw InputError(location(key), message, std::move(notes));
+}
+
+void Params::fail(std::string_view key, std::size_t index, const std::string& message,
+                  std::vector<std::string> notes) const
+{
+    throw InputError(location(key, index), message, std::move(notes));
+}
+
+} // namespace sph
