@@ -16,6 +16,14 @@ inline std::string formatNumber(double value, int significant = 6)
     return buffer;
 }
 
+// Fixed with `decimals` digits after the point: 0.449, 17608 (decimals 0).
+inline std::string formatFixed(double value, int decimals)
+{
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+    return buffer;
+}
+
 // Scientific with `decimals` digits after the point: 4.775e-04 (columns of figures).
 inline std::string formatScientific(double value, int decimals = 3)
 {

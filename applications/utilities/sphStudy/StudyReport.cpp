@@ -1,5 +1,6 @@
 #include "StudyReport.hpp"
 
+#include "core/Format.hpp"
 #include "io/AtomicFile.hpp"
 
 #include <algorithm>
@@ -15,26 +16,22 @@ namespace sph
 namespace
 {
 
-std::string number(double value, const char* format = "%.4g")
+// A table cell: 4 significant digits, "—" for a value that was not measured.
+std::string number(double value)
 {
-    if (std::isnan(value))
-    {
-        return "—";
-    }
-    char text[32];
-    std::snprintf(text, sizeof text, format, value);
-    return text;
+    return std::isnan(value) ? "—" : formatNumber(value, 4);
 }
 
+// The same with a fixed number of decimals.
+std::string number(double value, int decimals)
+{
+    return std::isnan(value) ? "—" : formatFixed(value, decimals);
+}
+
+// A CSV cell: 10 significant digits, empty when not measured.
 std::string csvNumber(double value)
 {
-    if (std::isnan(value))
-    {
-        return "";
-    }
-    char text[32];
-    std::snprintf(text, sizeof text, "%.10g", value);
-    return text;
+    return std::isnan(value) ? "" : formatNumber(value, 10);
 }
 
 std::string csvText(std::string text)
@@ -192,9 +189,9 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
         {
             md << " " << level << " |";
         }
-        md << " " << r.status << " | " << number(r.particles, "%.0f") << " | "
-           << number(r.wallSeconds) << " | " << number(r.usPerParticleStep, "%.3f") << " | "
-           << number(r.peakMemoryMB, "%.1f") << " |";
+        md << " " << r.status << " | " << number(r.particles, 0) << " | "
+           << number(r.wallSeconds) << " | " << number(r.usPerParticleStep, 3) << " | "
+           << number(r.peakMemoryMB, 1) << " |";
         for (const auto& metric : study.metrics)
         {
             md << " " << number(r.metrics.at(metric.name)) << " |";
