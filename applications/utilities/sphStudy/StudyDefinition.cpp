@@ -291,15 +291,20 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
         }
         for (const Entry& entry : p.dict("stable").entries())
         {
-            if (!entry.isDict() ||
-                std::find(metricNames.begin(), metricNames.end(), entry.key()) ==
-                    metricNames.end())
+            if (std::find(metricNames.begin(), metricNames.end(), entry.key()) ==
+                metricNames.end())
             {
                 throw InputError(entry.keyLocation(),
-                                 "stable: '" + entry.key() +
-                                     "' must be one of the metrics, as { min X; max Y; }",
+                                 "stable: '" + entry.key() + "' must be one of the metrics",
                                  {"valid metrics: " + joinSorted(metricNames),
                                   didYouMean(entry.key(), metricNames)});
+            }
+            if (!entry.isDict())
+            {
+                throw InputError(entry.keyLocation(),
+                                 "stable: the bounds of '" + entry.key() +
+                                     "' must be a dictionary { min X; max Y; }",
+                                 {"e.g. " + entry.key() + " { max 0.1; }"});
             }
             const Params q = validate(Schema()
                                           .add(Key::real("min", "lowest stable value").optional())

@@ -2,7 +2,6 @@
 // resume, report files, and errors in studyDict.
 #include "support/CaseRunner.hpp"
 
-
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -134,7 +133,8 @@ TEST_CASE("sphStudy runs every variant, measures, reports and resumes", "[study]
     }
     std::stringstream markdown;
     markdown << std::ifstream(study / "results.md").rdbuf();
-    CHECK_THAT(markdown.str(), Catch::Contains("- ULgradF: passes in 1 of 2 runs; not: n20_ULgradF"));
+    CHECK_THAT(markdown.str(),
+               Catch::Contains("- ULgradF: passes in 1 of 2 runs; not: n20_ULgradF"));
     CHECK_THAT(markdown.str(), Catch::Contains("**Best tipError for the wall time**"));
 
     // A second run reuses every finished variant.
@@ -189,5 +189,12 @@ TEST_CASE("sphStudy reports mistakes in studyDict at their place", "[study][erro
             dryRunWith("stable { selfConvergence", "stable { selfConvergenc");
         CHECK_THAT(output, Catch::Contains("stable: 'selfConvergenc' must be one of the metrics"));
         CHECK_THAT(output, Catch::Contains("Did you mean 'selfConvergence'?"));
+    }
+    SECTION("a stability bound that is not a dictionary")
+    {
+        const std::string output = dryRunWith("stable { selfConvergence { max 1e-3; } }",
+                                              "stable { selfConvergence 1e-3; }");
+        CHECK_THAT(output, Catch::Contains("system/studyDict:"));
+        CHECK_THAT(output, Catch::Contains("the bounds of 'selfConvergence' must be a dictionary"));
     }
 }
