@@ -12,7 +12,9 @@ std::string Hourglass<D>::description()
     return "Ganzenmueller (2015) hourglass control: pairwise penalty on the error of the "
            "F-predicted bond, parameter alpha (spec §5.2). Not derived from an energy. Acts in "
            "total-Lagrangian form; updated-Lagrangian with referenceUpdateInterval 1 makes the "
-           "bond error zero at every step (then it is 'none').";
+           "bond error zero at every step (then it is 'none'); with a lagging reference it turns "
+           "unstable under rotation or stretch once alpha x interval is large (measured: alpha "
+           "10 with interval 3, alpha 1 with interval 10; tutorials/hardCases/README.md).";
 }
 
 template <int D>
