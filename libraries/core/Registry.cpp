@@ -44,7 +44,7 @@ std::string libraryOf(const void* address)
 void RegistryStore::add(const std::string& family, const std::string& name, int dimension,
                         std::string description, std::function<Schema()> schema,
                         std::string sourceFile, std::shared_ptr<const void> factory,
-                        const void* codeAddress)
+                        const void* codeAddress, std::vector<FieldSpec> fields)
 {
     const std::string library = libraryOf(codeAddress);
     ModelRecord& record = families_[family][name];
@@ -56,6 +56,7 @@ void RegistryStore::add(const std::string& family, const std::string& name, int 
         record.sourceFile = std::move(sourceFile);
         record.library = library;
         record.schema = std::move(schema);
+        record.fields = std::move(fields);
     }
     else if (record.sourceFile != sourceFile || record.library != library ||
              record.factories.count(dimension))

@@ -8,6 +8,7 @@
 // and every model `M` declares
 //     static std::string description();                    // one paragraph for -listTypes
 //     static Schema schema();                              // its dictionary keys
+//     static std::vector<FieldSpec> fields();              // optional: its per-particle fields
 //     M(const Params& params, const Base::Args& args);
 // and registers itself in ONE line at the bottom of its .cpp:
 //     SPH_REGISTER_MODEL(Kernel, CubicSpline, "cubicSpline");          // dimension-independent
@@ -18,6 +19,7 @@
 // libraries loaded with dlopen land in the same tables as the built-in ones. A duplicate name
 // cannot throw during dlopen; it is recorded and reported by the loader, naming both sources.
 
+#include "FieldSpec.hpp"
 #include "InputError.hpp"
 #include "Schema.hpp"
 #include "Suggest.hpp"
@@ -39,6 +41,7 @@ struct ModelRecord
     std::string sourceFile;
     std::string library; // the shared object that registered it
     std::function<Schema()> schema;
+    std::vector<FieldSpec> fields; // the per-particle fields the model declares
     std::map<int, std::shared_ptr<const void>> factories; // by dimension (0: any)
 
     std::vector<int> dimensions() const;
@@ -51,7 +54,8 @@ public:
 
     void add(const std::string& family, const std::string& name, int dimension,
              std::string description, std::function<Schema()> schema, std::string sourceFile,
-             std::shared_ptr<const void> factory, const void* codeAddress);
+             std::shared_ptr<const void> factory, const void* codeAddress,
+             std::vector<FieldSpec> fields = {});
 
     const ModelRecord* find(const std::string& family, const std::string& name) const;
     // Sorted names of a family; with dimension > 0 only those available in that dimension.
@@ -76,12 +80,12 @@ public:
 
     static void add(const std::string& name, std::string description,
                     std::function<Schema()> schema, std::string sourceFile, Factory factory,
-                    const void* codeAddress)
+                    const void* codeAddress, std::vector<FieldSpec> fields = {})
     {
         RegistryStore::instance().add(Base::family, name, Base::dimension, std::move(description),
                                       std::move(schema), std::move(sourceFile),
                                       std::make_shared<const Factory>(std::move(factory)),
-                                      codeAddress);
+                                      codeAddress, std::move(fields));
     }
 
     static std::vector<std::string> names()
@@ -114,6 +118,20 @@ public:
     }
 };
 
+// The fields a model declares (none unless it has `static std::vector<FieldSpec> fields()`).
+template <class Model>
+std::vector<FieldSpec> declaredFields()
+{
+    if constexpr (requires { Model::fields(); })
+    {
+        return Model::fields();
+    }
+    else
+    {
+        return {};
+    }
+}
+
 template <class Base, class Model>
 struct Registration
 {
@@ -124,7 +142,7 @@ struct Registration
             [](const Params& params, const typename Base::Args& args) -> std::unique_ptr<Base> {
                 return std::make_unique<Model>(params, args);
             },
-            reinterpret_cast<const void*>(&Model::description));
+            reinterpret_cast<const void*>(&Model::description), declaredFields<Model>());
     }
 };
 

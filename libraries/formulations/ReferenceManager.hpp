@@ -3,7 +3,9 @@
 //   x^r ← x,  F^r ← F (= f F^r),  V^r ← det(F) V0,  K ← G f^{-1} (schemes that carry it),
 //   then neighbours, kernels, corrected gradients and the scheme's own data are rebuilt.
 
+#include "core/RunScalars.hpp"
 #include "formulations/Formulation.hpp"
+#include "particles/ParticleFields.hpp"
 #include "particles/Parallel.hpp"
 #include "stabilisation/Stabilisation.hpp"
 
@@ -36,20 +38,35 @@ public:
         return rebuild(particles.body);
     }
 
-    // Restores a saved reference configuration (restart) and rebuilds what depends on it.
-    ForceStatus restore(const ParticleSet<D>& particles, ReferenceConfiguration<D> saved)
+    // A moving reference is part of the restart state (a fixed one is rebuilt from X).
+    void declareFields(ParticleFields<D>& fields, RunScalars& scalars)
     {
-        ref_ = std::move(saved);
-        if (!carriesK())
+        if (!formulation_.updatesReference())
         {
-            ref_.K.clear();
+            return;
         }
-        else if (ref_.K.size() != particles.size())
+        fields.bind(FieldSpec::vector("referencePosition", "x^r, positions of the reference "
+                                                           "configuration [m]")
+                        .restart(),
+                    ref_.x);
+        fields.bind(FieldSpec::scalar("referenceVolume", "V^r = det(F^r) V0 [m^D]").restart(),
+                    ref_.V);
+        fields.bind(FieldSpec::tensor("referenceDeformationGradient",
+                                      "F^r, the deformation gradient of x^r")
+                        .restart(),
+                    ref_.F, Mat<D>::Identity());
+        if (carriesK())
         {
-            ref_.K.assign(particles.size(), Tensor3<D>::zero());
+            fields.bind(FieldSpec::thirdOrderTensor("referenceGradientOfF",
+                                                    "K = dF^r/dx^r (spec §6.5), K_ijk")
+                            .restart(),
+                        ref_.K);
         }
-        return rebuild(particles.body);
+        scalars.bind("referenceUpdateStep", ref_.updateStep);
     }
+
+    // After a restart has read the declared fields back: rebuilds what depends on them.
+    ForceStatus restored(const ParticleSet<D>& particles) { return rebuild(particles.body); }
 
     // Moves the reference configuration to the current positions when due. Returns whether it
     // moved; a failure (det F <= 0 at the move) is reported in `status`.

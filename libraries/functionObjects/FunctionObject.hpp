@@ -16,6 +16,7 @@
 #include "core/Registry.hpp"
 #include "kernels/Kernel.hpp"
 #include "materials/Material.hpp"
+#include "particles/ParticleFields.hpp"
 #include "particles/ReferenceConfiguration.hpp"
 
 #include <filesystem>
@@ -57,11 +58,16 @@ public:
         const ParticleSet<D>* initial = nullptr;            // the initial state (v = v^0)
         const std::vector<const Material<D>*>* materials = nullptr; // by body
         const std::vector<std::string>* bodyNames = nullptr;
+        // Where a function object declares per-particle fields of its own (history it keeps
+        // per particle: written, restarted and listed by -listTypes with no solver edit).
+        ParticleFields<D>* fields = nullptr;
     };
 
     virtual ~FunctionObject() = default;
 
     const std::string& name() const { return name_; }
+    // The prefix of this object's saveState() keys in the solver's restart data.
+    std::string statePrefix() const { return "fo:" + name_ + ":"; }
 
     // Whether execute() at (step, time) needs the strain energy.
     virtual bool needsStrainEnergy(long step, double time) const

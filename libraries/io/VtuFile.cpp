@@ -99,6 +99,7 @@ VtuArray readArray(vtkDataArray* source)
     array.components = source->GetNumberOfComponents();
     array.integer = source->GetDataType() == VTK_INT || source->GetDataType() == VTK_LONG ||
                     source->GetDataType() == VTK_ID_TYPE || source->GetDataType() == VTK_LONG_LONG;
+    array.readFromSingles = source->GetDataType() == VTK_FLOAT;
     const vtkIdType tuples = source->GetNumberOfTuples();
     array.values.resize(static_cast<std::size_t>(tuples * array.components));
     for (vtkIdType t = 0; t < tuples; ++t)
@@ -153,6 +154,18 @@ void writeVtu(const std::filesystem::path& file, const VtuData& data)
             throw std::logic_error("point array '" + name + "' has the wrong size");
         }
         grid->GetPointData()->AddArray(makeArray(name, array, n));
+    }
+    if (!data.activeScalars.empty())
+    {
+        grid->GetPointData()->SetActiveScalars(data.activeScalars.c_str());
+    }
+    if (!data.activeVectors.empty())
+    {
+        grid->GetPointData()->SetActiveVectors(data.activeVectors.c_str());
+    }
+    if (!data.activeTensors.empty())
+    {
+        grid->GetPointData()->SetActiveTensors(data.activeTensors.c_str());
     }
     for (const auto& [name, array] : data.fieldData)
     {
@@ -216,6 +229,12 @@ VtuData readVtu(const std::filesystem::path& file)
         grid->GetPoint(i, &data.points[static_cast<std::size_t>(3 * i)]);
     }
     vtkPointData* pointData = grid->GetPointData();
+    const auto activeName = [](vtkDataArray* array) {
+        return array && array->GetName() ? std::string(array->GetName()) : std::string();
+    };
+    data.activeScalars = activeName(pointData->GetScalars());
+    data.activeVectors = activeName(pointData->GetVectors());
+    data.activeTensors = activeName(pointData->GetTensors());
     for (int i = 0; i < pointData->GetNumberOfArrays(); ++i)
     {
         if (vtkDataArray* array = pointData->GetArray(i))

@@ -21,6 +21,7 @@ struct VtuArray
     // Names of the components shown by ParaView ("XX", "XY", ...); empty for defaults.
     std::vector<std::string> componentNames;
     std::vector<float> singles; // written as Float32 instead of `values` when not empty
+    bool readFromSingles = false; // (read back) the file stores it as Float32
 };
 
 struct VtuData
@@ -29,6 +30,10 @@ struct VtuData
     std::map<std::string, VtuArray> pointData;   // per-point arrays, by name
     std::map<std::string, VtuArray> fieldData;   // whole-dataset arrays (TimeValue, ...)
     std::map<std::string, std::vector<std::string>> stringFields; // e.g. body names
+    // The point arrays ParaView uses when nothing else is chosen (empty: none).
+    std::string activeScalars;
+    std::string activeVectors;
+    std::string activeTensors;
 
     std::size_t pointCount() const { return points.size() / 3; }
 };

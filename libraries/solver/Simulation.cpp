@@ -257,7 +257,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
                 object->saveState(own);
                 for (const auto& [key, value] : own)
                 {
-                    functionState["fo:" + object->name() + ":" + key] = value;
+                    functionState[object->statePrefix() + key] = value;
                 }
             }
         }

@@ -20,6 +20,7 @@
 #include "solver/CaseSettings.hpp"
 #include "solver/ParticleFile.hpp"
 #include "solver/RunLog.hpp"
+#include "solver/StateFile.hpp"
 
 #include <memory>
 #include <string>
@@ -58,6 +59,9 @@ private:
     std::string particleName(std::size_t a) const;
 
     // SimulationOutput.cpp
+    // Declares every per-particle field and run scalar of the solver itself (the models
+    // declare their own).
+    void declareFields();
     // postProcessing/summary.json: models, status, cost and the function objects' results.
     void writeSummary(const RunSummary& summary, const std::string& failure) const;
     void removeOldOutput();
@@ -69,6 +73,10 @@ private:
     ControlSettings control_;
     std::string caseName_;
     ParticleSet<D> particles_;
+    // Every per-particle field and run scalar: what output and restart iterate over (before
+    // the models, which may keep references into it).
+    ParticleFields<D> fields_;
+    RunScalars runScalars_;
     std::vector<std::string> bodyNames_;
     double spacing_ = 0.0;
     Vec<D> gravity_ = Vec<D>::Zero();

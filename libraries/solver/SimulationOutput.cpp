@@ -1,5 +1,5 @@
-// Output and restart: every VTK/<case>_<n>.vtu holds the full state (positions, both
-// velocities, reference configuration, time-step state, function-object state), so
+// Output and restart: every VTK/<case>_<n>.vtu holds the display fields and the full state
+// (every restart field and run scalar of the registries, the function objects' state), so
 // `startFrom latestTime;` continues bit-identically to an uninterrupted run.
 #include "solver/Simulation.hpp"
 
@@ -12,6 +12,7 @@
 
 #include <omp.h>
 
+#include <optional>
 #include <sstream>
 
 
@@ -38,132 +39,6 @@ long outputIndexOf(const std::string& fileName, const std::string& caseName)
         return -1;
     }
     return std::stol(digits);
-}
-
-// Display arrays: single precision, embedded in 3D (3 or 9 components) as ParaView expects.
-// Restart arrays: double precision with the case's own D or D*D components.
-template <int D>
-VtuArray displayVectors(const std::vector<Vec<D>>& values)
-{
-    VtuArray array{3, {}, false, {}, {}};
-    array.singles.reserve(3 * values.size());
-    for (const auto& v : values)
-    {
-        for (int d = 0; d < 3; ++d)
-        {
-            array.singles.push_back(d < D ? static_cast<float>(v[d]) : 0.0f);
-        }
-    }
-    return array;
-}
-
-// D×D matrices embedded in 3×3 (plane strain: F_zz = 1; stresses: the in-plane part).
-template <int D>
-VtuArray displayMatrices(const std::vector<Mat<D>>& values, bool identityPadding)
-{
-    VtuArray array{9, {}, false, {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"}, {}};
-    array.singles.reserve(9 * values.size());
-    for (const auto& m : values)
-    {
-        const Eigen::Matrix3d full = embed<D>(m, identityPadding);
-        for (int i = 0; i < 3; ++i)
-        {
-            for (int j = 0; j < 3; ++j)
-            {
-                array.singles.push_back(static_cast<float>(full(i, j)));
-            }
-        }
-    }
-    return array;
-}
-
-template <int D>
-VtuArray exactVectors(const std::vector<Vec<D>>& values)
-{
-    VtuArray array{D, {}, false, {}, {}};
-    array.values.reserve(D * values.size());
-    for (const auto& v : values)
-    {
-        for (int d = 0; d < D; ++d)
-        {
-            array.values.push_back(v[d]);
-        }
-    }
-    return array;
-}
-
-template <int D>
-VtuArray exactMatrices(const std::vector<Mat<D>>& values)
-{
-    VtuArray array{D * D, {}, false, {}, {}};
-    array.values.reserve(D * D * values.size());
-    for (const auto& m : values)
-    {
-        for (int i = 0; i < D; ++i)
-        {
-            for (int j = 0; j < D; ++j)
-            {
-                array.values.push_back(m(i, j));
-            }
-        }
-    }
-    return array;
-}
-
-template <class T>
-VtuArray scalars(const std::vector<T>& values, bool integer)
-{
-    VtuArray array{1, {}, integer, {}, {}};
-    array.values.assign(values.begin(), values.end());
-    return array;
-}
-
-VtuArray scalar(double value)
-{
-    return VtuArray{1, {value}, false, {}, {}};
-}
-
-const VtuArray& need(const VtuData& data, const std::map<std::string, VtuArray>& arrays,
-                     const std::string& name, const std::string& file)
-{
-    (void)data;
-    const auto found = arrays.find(name);
-    if (found == arrays.end())
-    {
-        throw InputError("cannot restart from '" + file + "': it has no array '" + name + "'",
-                         {"It was written by an older or different program; start afresh with "
-                          "startFrom startTime."});
-    }
-    return found->second;
-}
-
-// Reads an array of `stride` components per particle (D for the restart arrays, 3 for points).
-template <int D>
-void readVectors(const std::vector<double>& values, std::size_t stride, std::vector<Vec<D>>& out)
-{
-    for (std::size_t a = 0; a < out.size(); ++a)
-    {
-        for (int d = 0; d < D; ++d)
-        {
-            out[a][d] = values[stride * a + static_cast<std::size_t>(d)];
-        }
-    }
-}
-
-template <int D>
-void readMatrices(const VtuArray& array, std::vector<Mat<D>>& out)
-{
-    for (std::size_t a = 0; a < out.size(); ++a)
-    {
-        for (int i = 0; i < D; ++i)
-        {
-            for (int j = 0; j < D; ++j)
-            {
-                out[a](i, j) = array.values[static_cast<std::size_t>(D * D) * a +
-                                            static_cast<std::size_t>(D * i + j)];
-            }
-        }
-    }
 }
 
 } // namespace
@@ -226,84 +101,87 @@ void Simulation<D>::removeOldOutput()
 }
 
 template <int D>
+void Simulation<D>::declareFields()
+{
+    ParticleSet<D>& p = particles_;
+    ParticleFields<D>& f = fields_;
+    f.bind(FieldSpec::vector(positionField, "current position x^n [m] (the VTK points)")
+               .restart()
+               .display(),
+           p.x);
+    f.template derive<Vec<D>>(FieldSpec::vector("displacement", "x^n - X [m]").display().active(),
+                     [&p](std::size_t a) { return Vec<D>(p.x[a] - p.X[a]); });
+    f.bind(FieldSpec::vector("velocity", "velocity v^n at the time level [m/s]").display(),
+           velocitySync_);
+    f.bind(FieldSpec::tensor("deformationGradient", "F at x^n (2D, 1D: F_zz = 1 shown)")
+               .display()
+               .padding(TensorPadding::identity),
+           p.F, Mat<D>::Identity());
+    f.bind(FieldSpec::tensor("firstPiolaKirchhoffStress",
+                             "P(F) [Pa] (2D, 1D: the components the model computes, others 0)")
+               .display(),
+           p.P);
+    f.template derive<Mat<D>>(FieldSpec::tensor("cauchyStress", "sigma = P F^T / det F [Pa] (2D, 1D: "
+                                                       "the components the model computes)")
+                         .display()
+                         .active(),
+                     [&p](std::size_t a) {
+                         return Mat<D>(p.P[a] * p.F[a].transpose() / p.F[a].determinant());
+                     });
+    f.template derive<double>(FieldSpec::scalar("volumeRatio", "J = det F, the volume change").display().active(),
+                     [&p](std::size_t a) { return p.F[a].determinant(); });
+    f.bind(FieldSpec::integer("bodyId", "the particle's body: index into the field data "
+                                        "'bodyNames'")
+               .display(),
+           p.body);
+    f.bind(FieldSpec::integer("fixed", "1: position held by a constraint").restart().display(),
+           p.fixed);
+    f.bind(FieldSpec::vector("initialPosition", "X, the position at t = 0 [m]").restart(), p.X);
+    f.bind(FieldSpec::scalar("initialVolume", "V0 [m^D]").restart(), p.V0);
+    f.bind(FieldSpec::scalar("mass", "m = rho0 V0 [kg]").restart(), p.m);
+    f.bind(FieldSpec::vector("velocityHalfStep", "v^{n-1/2} of the leapfrog (v^0 before the "
+                                                 "first step) [m/s]")
+               .restart(),
+           p.v);
+    f.bind(FieldSpec::vector("acceleration", "a^n = T/m + g [m/s^2]"), acceleration_);
+    f.bind(FieldSpec::vector("previousPosition", "x of the last good level [m]"), previousX_);
+    f.bind(FieldSpec::tensor("nextDeformationGradient", "F of the force evaluation under way"),
+           nextF_, Mat<D>::Identity());
+    f.bind(FieldSpec::tensor("nextStress", "P of the force evaluation under way [Pa]"), nextP_);
+    if (contact_->active())
+    {
+        f.bind(FieldSpec::vector("contactVelocityChange", "the last contact kick [m/s]"),
+               contactDeltaV_);
+    }
+    reference_->declareFields(fields_, runScalars_);
+
+    RunScalars& s = runScalars_;
+    s.bind("deltaT", deltaT_);
+    s.bind("previousDeltaT", previousDeltaT_);
+    s.bind("firstDeltaT", firstDeltaT_);
+    s.bind("halfStepVelocity", halfStepVelocity_);
+    s.bind("outputIndex", outputIndex_);
+    s.bind("nextOutputTime", nextOutputTime_);
+    s.bind("externalWork", externalWork_);
+    s.bind("contactWork", contactWork_);
+    s.bind("initialEnergy", initialEnergy_);
+    s.bind("haveInitialEnergy", haveInitialEnergy_);
+}
+
+template <int D>
 void Simulation<D>::writeOutput(bool restartable, long step, double time,
                                 const std::map<std::string, double>& functionState)
 {
-    const std::size_t n = particles_.size();
     VtuData data;
-    data.points.reserve(3 * n);
-    for (const auto& x : particles_.x)
-    {
-        for (int d = 0; d < 3; ++d)
-        {
-            data.points.push_back(d < D ? x[d] : 0.0);
-        }
-    }
-    std::vector<Vec<D>> displacement(n);
-    std::vector<double> J(n);
-    for (std::size_t a = 0; a < n; ++a)
-    {
-        displacement[a] = particles_.x[a] - particles_.X[a];
-        J[a] = particles_.F[a].determinant();
-    }
-    data.pointData["displacement"] = displayVectors<D>(displacement);
-    data.pointData["velocity"] = displayVectors<D>(velocitySync_);
-    data.pointData["F"] = displayMatrices<D>(particles_.F, true);
-    data.pointData["P"] = displayMatrices<D>(particles_.P, false);
-    VtuArray jacobian{1, {}, false, {}, {}};
-    jacobian.singles.assign(J.begin(), J.end());
-    data.pointData["J"] = jacobian;
-    data.pointData["bodyId"] = scalars(particles_.body, true);
-    data.pointData["fixed"] = scalars(particles_.fixed, true);
-    // What a restart needs beyond the display fields.
-    data.pointData["initialPosition"] = exactVectors<D>(particles_.X);
-    data.pointData["initialVolume"] = scalars(particles_.V0, false);
-    data.pointData["mass"] = scalars(particles_.m, false);
-    data.pointData["velocityHalfStep"] = exactVectors<D>(particles_.v);
-    const ReferenceConfiguration<D>& ref = reference_->reference();
-    if (formulation_->updatesReference())
-    {
-        data.pointData["referencePosition"] = exactVectors<D>(ref.x);
-        data.pointData["referenceVolume"] = scalars(ref.V, false);
-        data.pointData["referenceF"] = exactMatrices<D>(ref.F);
-        if (!ref.K.empty())
-        {
-            VtuArray K{D * D * D, {}, false, {}, {}};
-            K.values.reserve(D * D * D * n);
-            for (const auto& tensor : ref.K)
-            {
-                for (int i = 0; i < D; ++i)
-                {
-                    for (int j = 0; j < D; ++j)
-                    {
-                        for (int k = 0; k < D; ++k)
-                        {
-                            K.values.push_back(tensor(i, j, k));
-                        }
-                    }
-                }
-            }
-            data.pointData["referenceK"] = K;
-        }
-    }
-    data.fieldData["TimeValue"] = scalar(time);
-    data.fieldData["step"] = scalar(static_cast<double>(step));
-    data.fieldData["restartable"] = scalar(restartable ? 1.0 : 0.0);
-    data.fieldData["deltaT"] = scalar(deltaT_);
-    data.fieldData["previousDeltaT"] = scalar(previousDeltaT_);
-    data.fieldData["firstDeltaT"] = scalar(firstDeltaT_);
-    data.fieldData["halfStepVelocity"] = scalar(halfStepVelocity_ ? 1.0 : 0.0);
-    data.fieldData["outputIndex"] = scalar(static_cast<double>(outputIndex_));
-    data.fieldData["nextOutputTime"] = scalar(nextOutputTime_);
-    data.fieldData["externalWork"] = scalar(externalWork_);
-    data.fieldData["contactWork"] = scalar(contactWork_);
-    data.fieldData["initialEnergy"] = scalar(initialEnergy_);
-    data.fieldData["haveInitialEnergy"] = scalar(haveInitialEnergy_ ? 1.0 : 0.0);
-    data.fieldData["referenceUpdateStep"] = scalar(static_cast<double>(ref.updateStep));
-    data.fieldData["dimension"] = scalar(D);
+    writeState<D>(fields_, runScalars_, time, data);
+    // What identifies the output itself (the level it holds, whether a restart may use it).
+    const auto number = [](double value) { return VtuArray{1, {value}, false, {}, {}}; };
+    data.fieldData[std::string(restartPrefix) + "step"] = number(static_cast<double>(step));
+    data.fieldData[std::string(restartPrefix) + "restartable"] = number(restartable ? 1.0 : 0.0);
+    data.fieldData[std::string(restartPrefix) + "dimension"] = number(D);
     for (const auto& [key, value] : functionState)
     {
-        data.fieldData[key] = scalar(value);
+        data.fieldData[restartPrefix + key] = number(value);
     }
     data.stringFields["bodyNames"] = bodyNames_;
 
@@ -327,16 +205,19 @@ bool Simulation<D>::restoreLatest(RunLog& log)
         }
         const VtuData data = readVtu(path);
         const auto& fields = data.fieldData;
-        const auto restartable = fields.find("restartable");
-        if (restartable == fields.end() || restartable->second.values.at(0) != 1.0)
+        const auto number = [&](const std::string& name) -> std::optional<double> {
+            const auto found = fields.find(restartPrefix + name);
+            return found == fields.end() || found->second.values.size() != 1
+                       ? std::nullopt
+                       : std::optional<double>(found->second.values[0]);
+        };
+        if (number("restartable") != 1.0)
         {
             continue;
         }
         const std::string file = path.string();
-        const auto field = [&](const std::string& name) {
-            return need(data, fields, name, file).values.at(0);
-        };
-        if (data.pointCount() != particles_.size() || static_cast<int>(field("dimension")) != D ||
+        if (data.pointCount() != particles_.size() || number("dimension") != D ||
+            !number("step") || fields.count("TimeValue") == 0 ||
             data.stringFields.count("bodyNames") == 0 ||
             data.stringFields.at("bodyNames") != bodyNames_)
         {
@@ -346,72 +227,19 @@ bool Simulation<D>::restoreLatest(RunLog& log)
                              {"The case changed since that output; start afresh with startFrom "
                               "startTime (or run Allclean)."});
         }
-        const auto array = [&](const std::string& name) -> const VtuArray& {
-            return need(data, data.pointData, name, file);
-        };
-        const std::size_t n = particles_.size();
-        readVectors<D>(data.points, 3, particles_.x);
-        readVectors<D>(array("initialPosition").values, D, particles_.X);
-        readVectors<D>(array("velocityHalfStep").values, D, particles_.v);
-        for (std::size_t a = 0; a < n; ++a)
+        readState<D>(data, fields_, runScalars_, file);
+        const ForceStatus status = reference_->restored(particles_);
+        if (!status.ok())
         {
-            particles_.V0[a] = array("initialVolume").values[a];
-            particles_.m[a] = array("mass").values[a];
-            particles_.fixed[a] = static_cast<std::uint8_t>(array("fixed").values[a]);
+            throw InputError("cannot restart from '" + file + "': the saved reference "
+                             "configuration is singular at " +
+                                 particleName(static_cast<std::size_t>(status.badParticle)));
         }
-        if (formulation_->updatesReference())
-        {
-            ReferenceConfiguration<D> saved;
-            saved.x.resize(n);
-            saved.V.resize(n);
-            saved.F.resize(n);
-            readVectors<D>(array("referencePosition").values, D, saved.x);
-            saved.V = array("referenceVolume").values;
-            readMatrices<D>(array("referenceF"), saved.F);
-            if (reference_->carriesK())
-            {
-                saved.K.assign(n, Tensor3<D>::zero());
-                const auto& K = array("referenceK").values;
-                for (std::size_t a = 0; a < n; ++a)
-                {
-                    for (int i = 0; i < D; ++i)
-                    {
-                        for (int j = 0; j < D; ++j)
-                        {
-                            for (int k = 0; k < D; ++k)
-                            {
-                                saved.K[a](i, j, k) =
-                                    K[static_cast<std::size_t>(D * D * D) * a +
-                                      static_cast<std::size_t>(D * D * i + D * j + k)];
-                            }
-                        }
-                    }
-                }
-            }
-            saved.updateStep = static_cast<long>(field("referenceUpdateStep"));
-            const ForceStatus status = reference_->restore(particles_, std::move(saved));
-            if (!status.ok())
-            {
-                throw InputError("cannot restart from '" + file + "': the saved reference "
-                                 "configuration is singular at " +
-                                     particleName(static_cast<std::size_t>(status.badParticle)));
-            }
-        }
-        step_ = static_cast<long>(field("step"));
-        time_ = field("TimeValue");
-        deltaT_ = field("deltaT");
-        previousDeltaT_ = field("previousDeltaT");
-        firstDeltaT_ = field("firstDeltaT");
-        halfStepVelocity_ = field("halfStepVelocity") != 0.0;
-        outputIndex_ = static_cast<long>(field("outputIndex"));
-        nextOutputTime_ = field("nextOutputTime");
-        externalWork_ = field("externalWork");
-        contactWork_ = field("contactWork");
-        initialEnergy_ = field("initialEnergy");
-        haveInitialEnergy_ = field("haveInitialEnergy") != 0.0;
+        step_ = static_cast<long>(*number("step"));
+        time_ = fields.at("TimeValue").values.at(0);
         for (auto& object : functionObjects_)
         {
-            const std::string prefix = "fo:" + object->name() + ":";
+            const std::string prefix = restartPrefix + object->statePrefix();
             std::map<std::string, double> own;
             for (const auto& [key, value] : fields)
             {

@@ -157,6 +157,7 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
     }
     nextF_.assign(n, Mat<D>::Identity());
     nextP_.assign(n, Mat<D>::Zero());
+    declareFields();
 }
 
 template <int D>
@@ -167,6 +168,7 @@ void Simulation<D>::loadParticles(const InitialParticles& initial)
 {
     const std::size_t n = initial.size();
     particles_.resize(n);
+    fields_.setSize(n);
     bodyNames_ = initial.bodyNames;
     for (std::size_t a = 0; a < n; ++a)
     {
@@ -370,6 +372,7 @@ void Simulation<D>::setupFunctionObjects()
         args.initial = &particles_;
         args.materials = &materials_;
         args.bodyNames = &bodyNames_;
+        args.fields = &fields_;
         functionObjects_.push_back(selectModel<FunctionObject<D>>(entry.dict(), args, D));
     }
 }

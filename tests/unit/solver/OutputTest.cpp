@@ -34,17 +34,47 @@ TEST_CASE("output reads back with VTK's reader: arrays, sizes, TimeValue", "[out
         CHECK(data.fieldData.at("TimeValue").values.at(0) == Approx(entry.time).epsilon(1e-15));
         CHECK(entry.time > previous);
         previous = entry.time;
-        const std::map<std::string, int> expected{{"displacement", 3}, {"velocity", 3}, {"F", 9},
-                                                  {"P", 9},            {"J", 1},        {"bodyId", 1},
-                                                  {"fixed", 1}};
+        // Display fields: physical names, 3-component vectors and 3×3 tensors of a 1D case,
+        // double precision; the active attributes set.
+        const std::map<std::string, int> expected{
+            {"displacement", 3}, {"velocity", 3}, {"deformationGradient", 9},
+            {"firstPiolaKirchhoffStress", 9}, {"cauchyStress", 9}, {"volumeRatio", 1},
+            {"bodyId", 1}, {"fixed", 1}};
         for (const auto& [name, components] : expected)
         {
             INFO(name);
             REQUIRE(data.pointData.count(name));
             CHECK(data.pointData.at(name).components == components);
             CHECK(data.pointData.at(name).values.size() == 40u * components);
+            CHECK(!data.pointData.at(name).readFromSingles);
         }
-        CHECK(data.pointData.at("F").componentNames.at(0) == "XX");
+        CHECK(data.activeScalars == "volumeRatio");
+        CHECK(data.activeVectors == "displacement");
+        CHECK(data.activeTensors == "cauchyStress");
+        const VtuArray& F = data.pointData.at("deformationGradient");
+        CHECK(F.componentNames ==
+              std::vector<std::string>{"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"});
+        for (std::size_t a = 0; a < 40; ++a)
+        {
+            CHECK(F.values[9 * a + 4] == 1.0); // F_yy = F_zz = 1 in 1D (uniaxial strain)
+            CHECK(F.values[9 * a + 8] == 1.0);
+            CHECK(F.values[9 * a + 1] == 0.0);
+            CHECK(data.pointData.at("velocity").values[3 * a + 1] == 0.0);
+            CHECK(data.pointData.at("volumeRatio").values[a] == F.values[9 * a]); // J = F_xx
+        }
+        // Restart data apart: "restart:" arrays (the case's own D components), none displayed.
+        for (const char* name : {"restart:initialPosition", "restart:velocityHalfStep",
+                                 "restart:initialVolume", "restart:mass"})
+        {
+            INFO(name);
+            REQUIRE(data.pointData.count(name));
+            CHECK(data.pointData.at(name).components == 1);
+        }
+        for (const auto& [name, array] : data.pointData)
+        {
+            INFO(name);
+            CHECK((expected.count(name) == 1 || name.rfind("restart:", 0) == 0));
+        }
         CHECK(data.pointData.at("fixed").values.at(0) == 1.0);
         CHECK(data.stringFields.at("bodyNames") == std::vector<std::string>{"bar"});
     }

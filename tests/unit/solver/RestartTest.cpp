@@ -29,20 +29,6 @@ VtuData lastOutput(const std::filesystem::path& caseDir)
     return readVtu(caseDir / "VTK" / series.entries().back().file);
 }
 
-void requireIdentical(const VtuData& a, const VtuData& b)
-{
-    REQUIRE(a.points.size() == b.points.size());
-    CHECK(a.points == b.points); // bitwise
-    for (const char* name : {"velocity", "velocityHalfStep", "F", "P", "displacement"})
-    {
-        INFO(name);
-        REQUIRE(a.pointData.count(name));
-        CHECK(a.pointData.at(name).values == b.pointData.at(name).values);
-    }
-    CHECK(a.fieldData.at("TimeValue").values == b.fieldData.at("TimeValue").values);
-    CHECK(a.fieldData.at("step").values == b.fieldData.at("step").values);
-}
-
 void checkRestart(const std::filesystem::path& whole, const std::filesystem::path& split,
                   double endTime, double stopTime, const std::vector<std::string>& tables)
 {
@@ -52,7 +38,7 @@ void checkRestart(const std::filesystem::path& whole, const std::filesystem::pat
     REQUIRE(test::runSolver(split, {"-set", "endTime=" + std::to_string(stopTime)}) == 0);
     REQUIRE(test::runSolver(split, {"-set", "endTime=" + std::to_string(endTime), "-set",
                                     "controlDict.startFrom=latestTime"}) == 0);
-    requireIdentical(lastOutput(whole), lastOutput(split));
+    test::requireIdenticalState(lastOutput(whole), lastOutput(split));
     for (const auto& table : tables)
     {
         INFO(table);

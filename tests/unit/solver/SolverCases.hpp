@@ -1,6 +1,7 @@
 #pragma once
 // Small cases written by the solver tests.
 
+#include "io/VtuFile.hpp"
 #include "support/CaseRunner.hpp"
 
 #include <fstream>
@@ -30,6 +31,28 @@ inline std::filesystem::path writeBlockCase(const std::filesystem::path& folder,
         << "    constraints { base { type fixed; region { type box; min (0 0); max (0.01 "
            "0.001); } } }\n}\n";
     return folder;
+}
+
+// Two outputs hold the same state bit for bit: the points, every point array (display and
+// restart alike) and every number of the field data.
+inline void requireIdenticalState(const VtuData& a, const VtuData& b)
+{
+    REQUIRE(a.points.size() == b.points.size());
+    CHECK(a.points == b.points);
+    REQUIRE(a.pointData.size() == b.pointData.size());
+    for (const auto& [name, array] : a.pointData)
+    {
+        INFO(name);
+        REQUIRE(b.pointData.count(name));
+        CHECK(array.values == b.pointData.at(name).values);
+    }
+    REQUIRE(a.fieldData.size() == b.fieldData.size());
+    for (const auto& [name, array] : a.fieldData)
+    {
+        INFO(name);
+        REQUIRE(b.fieldData.count(name));
+        CHECK(array.values == b.fieldData.at(name).values);
+    }
 }
 
 } // namespace sph::test

@@ -1,0 +1,330 @@
+#pragma once
+// The per-particle field registry: every per-particle quantity of a run, each declared once
+// (core/FieldSpec.hpp) with its storage. Whatever handles "all the particle data" iterates over
+// it instead of naming arrays: VTK output and restart (solver/StateFile.hpp); later the ghost
+// exchange and the migration of particles between ranks.
+//
+//   fields.bind(FieldSpec::vector("velocity", "v^n [m/s]").display(), velocitySync);
+//   auto& peak = fields.declare<double>(peakSpeedField());       // a model's own array
+//   fields.derive<double>(jSpec, [&](std::size_t a) { return F[a].determinant(); });
+//
+// Stored fields are either bound (the array is owned by whoever computes it: the particle set,
+// the reference configuration, the time loop; the hot loops keep their plain std::vectors) or
+// owned here (a model's history variables). Derived fields are display quantities computed
+// from the others when written. Every field is seen through FieldArray as numbers: the
+// "native" components of one value (D for a vector, D×D row-major for a tensor, D×D×D with the
+// last index fastest for a third-order tensor).
+
+#include "core/FieldSpec.hpp"
+#include "particles/Types.hpp"
+
+#include <deque>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace sph
+{
+
+// Native component count of a kind in dimension D.
+template <int D>
+constexpr int nativeComponents(FieldKind kind)
+{
+    switch (kind)
+    {
+    case FieldKind::integer:
+    case FieldKind::scalar: return 1;
+    case FieldKind::vector: return D;
+    case FieldKind::tensor: return D * D;
+    case FieldKind::thirdOrderTensor: return D * D * D;
+    }
+    return 0;
+}
+
+namespace fieldValues
+{
+// One value to and from its native components. (In 1D, Vec<1> and Mat<1> are the same type;
+// both have one component, so one overload serves both.)
+inline void get(int value, double* out) { out[0] = value; }
+inline void set(const double* in, int& value) { value = static_cast<int>(in[0]); }
+inline void get(std::uint8_t value, double* out) { out[0] = value; }
+inline void set(const double* in, std::uint8_t& value) { value = static_cast<std::uint8_t>(in[0]); }
+inline void get(double value, double* out) { out[0] = value; }
+inline void set(const double* in, double& value) { value = in[0]; }
+
+template <int R, int C>
+void get(const Eigen::Matrix<double, R, C>& value, double* out)
+{
+    for (int i = 0; i < R; ++i)
+    {
+        for (int j = 0; j < C; ++j)
+        {
+            out[i * C + j] = value(i, j);
+        }
+    }
+}
+template <int R, int C>
+void set(const double* in, Eigen::Matrix<double, R, C>& value)
+{
+    for (int i = 0; i < R; ++i)
+    {
+        for (int j = 0; j < C; ++j)
+        {
+            value(i, j) = in[i * C + j];
+        }
+    }
+}
+
+template <int D>
+void get(const Tensor3<D>& value, double* out)
+{
+    for (int i = 0; i < D; ++i)
+    {
+        for (int j = 0; j < D; ++j)
+        {
+            for (int k = 0; k < D; ++k)
+            {
+                out[D * D * i + D * j + k] = value(i, j, k);
+            }
+        }
+    }
+}
+template <int D>
+void set(const double* in, Tensor3<D>& value)
+{
+    for (int i = 0; i < D; ++i)
+    {
+        for (int j = 0; j < D; ++j)
+        {
+            for (int k = 0; k < D; ++k)
+            {
+                value(i, j, k) = in[D * D * i + D * j + k];
+            }
+        }
+    }
+}
+
+// The kind a C++ value type is stored as.
+template <int D, class T>
+constexpr bool matchesKind(FieldKind kind)
+{
+    if constexpr (std::is_same_v<T, int> || std::is_same_v<T, std::uint8_t>)
+    {
+        return kind == FieldKind::integer;
+    }
+    else if constexpr (std::is_same_v<T, double>)
+    {
+        return kind == FieldKind::scalar;
+    }
+    else if constexpr (std::is_same_v<T, Vec<D>> && std::is_same_v<T, Mat<D>>) // 1D
+    {
+        return kind == FieldKind::vector || kind == FieldKind::tensor;
+    }
+    else if constexpr (std::is_same_v<T, Vec<D>>)
+    {
+        return kind == FieldKind::vector;
+    }
+    else if constexpr (std::is_same_v<T, Mat<D>>)
+    {
+        return kind == FieldKind::tensor;
+    }
+    else if constexpr (std::is_same_v<T, Tensor3<D>>)
+    {
+        return kind == FieldKind::thirdOrderTensor;
+    }
+    else
+    {
+        return false;
+    }
+}
+} // namespace fieldValues
+
+// One field's values seen as numbers, whatever their C++ type.
+class FieldArray
+{
+public:
+    virtual ~FieldArray() = default;
+    virtual std::size_t size() const = 0;
+    // The native components of particle a's value into out[0 .. components).
+    virtual void get(std::size_t a, double* out) const = 0;
+    // Stored fields only: sets particle a's value from its native components.
+    virtual void set(std::size_t a, const double* in) = 0;
+    virtual void resize(std::size_t n) = 0;
+    virtual bool stored() const = 0;
+};
+
+template <class T>
+class StoredArray final : public FieldArray
+{
+public:
+    explicit StoredArray(std::vector<T>& values, T fill) : values_(values), fill_(std::move(fill)) {}
+    std::size_t size() const override { return values_.size(); }
+    void get(std::size_t a, double* out) const override { fieldValues::get(values_[a], out); }
+    void set(std::size_t a, const double* in) override { fieldValues::set(in, values_[a]); }
+    void resize(std::size_t n) override { values_.resize(n, fill_); }
+    bool stored() const override { return true; }
+
+private:
+    std::vector<T>& values_;
+    T fill_;
+};
+
+template <class T>
+class DerivedArray final : public FieldArray
+{
+public:
+    DerivedArray(std::function<std::size_t()> size, std::function<T(std::size_t)> value)
+        : size_(std::move(size)), value_(std::move(value))
+    {
+    }
+    std::size_t size() const override { return size_(); }
+    void get(std::size_t a, double* out) const override { fieldValues::get(value_(a), out); }
+    void set(std::size_t, const double*) override
+    {
+        throw std::logic_error("a derived field cannot be set");
+    }
+    void resize(std::size_t) override {}
+    bool stored() const override { return false; }
+
+private:
+    std::function<std::size_t()> size_;
+    std::function<T(std::size_t)> value_;
+};
+
+template <int D>
+class ParticleFields
+{
+public:
+    struct Field
+    {
+        FieldSpec spec;
+        std::unique_ptr<FieldArray> array;
+        int components() const { return nativeComponents<D>(spec.kind()); }
+    };
+
+    ParticleFields() = default;
+    ParticleFields(const ParticleFields&) = delete; // derived fields refer to this registry
+    ParticleFields& operator=(const ParticleFields&) = delete;
+
+    // The array owned elsewhere; `fill` is the value of particles added by resize().
+    template <class T>
+    void bind(const FieldSpec& spec, std::vector<T>& values, std::type_identity_t<T> fill = zero<T>())
+    {
+        checkKind<T>(spec);
+        add(spec, std::make_unique<StoredArray<T>>(values, std::move(fill)));
+    }
+
+    // An array owned here, sized to the particles (size()) and filled with `fill`. Declaring
+    // the same spec again returns the same array (one model serving several bodies).
+    template <class T>
+    std::vector<T>& declare(const FieldSpec& spec, std::type_identity_t<T> fill = zero<T>())
+    {
+        checkKind<T>(spec);
+        for (auto& owned : owned_)
+        {
+            if (owned.spec == spec)
+            {
+                return *static_cast<std::vector<T>*>(owned.values.get());
+            }
+        }
+        auto values = std::make_shared<std::vector<T>>(size_, fill);
+        std::vector<T>& result = *values;
+        add(spec, std::make_unique<StoredArray<T>>(result, std::move(fill)));
+        owned_.push_back({spec, std::shared_ptr<void>(values, values.get())});
+        return result;
+    }
+
+    // A display quantity computed from stored fields when it is written.
+    template <class T>
+    void derive(const FieldSpec& spec, std::type_identity_t<std::function<T(std::size_t)>> value)
+    {
+        checkKind<T>(spec);
+        if (!spec.isDisplay() || spec.isRestart())
+        {
+            throw std::logic_error("derived field '" + spec.name() + "' must be display only");
+        }
+        add(spec, std::make_unique<DerivedArray<T>>([this] { return size_; }, std::move(value)));
+    }
+
+    // Sets the particle count of every stored field (new particles get each field's fill).
+    void resize(std::size_t n)
+    {
+        size_ = n;
+        for (auto& field : fields_)
+        {
+            field.array->resize(n);
+        }
+    }
+    // The particle count declare() sizes new arrays to.
+    void setSize(std::size_t n) { size_ = n; }
+    std::size_t size() const { return size_; }
+
+    const std::deque<Field>& all() const { return fields_; }
+    std::deque<Field>& all() { return fields_; }
+    const Field* find(const std::string& name) const
+    {
+        for (const auto& field : fields_)
+        {
+            if (field.spec.name() == name)
+            {
+                return &field;
+            }
+        }
+        return nullptr;
+    }
+
+private:
+    template <class T>
+    static T zero()
+    {
+        if constexpr (std::is_arithmetic_v<T>)
+        {
+            return T{};
+        }
+        else if constexpr (std::is_same_v<T, Tensor3<D>>)
+        {
+            return Tensor3<D>::zero();
+        }
+        else
+        {
+            return T::Zero();
+        }
+    }
+
+    template <class T>
+    static void checkKind(const FieldSpec& spec)
+    {
+        if (!fieldValues::matchesKind<D, T>(spec.kind()))
+        {
+            throw std::logic_error("field '" + spec.name() + "' is declared " +
+                                   toString(spec.kind()) + " but stored as another type");
+        }
+    }
+
+    void add(const FieldSpec& spec, std::unique_ptr<FieldArray> array)
+    {
+        for (const auto& field : fields_)
+        {
+            if (field.spec.name() == spec.name() || field.spec.fileName() == spec.fileName())
+            {
+                throw std::logic_error("particle field '" + spec.name() + "' is declared twice");
+            }
+        }
+        fields_.push_back({spec, std::move(array)});
+    }
+
+    struct Owned
+    {
+        FieldSpec spec;
+        std::shared_ptr<void> values;
+    };
+
+    std::size_t size_ = 0;
+    std::deque<Field> fields_;
+    std::vector<Owned> owned_;
+};
+
+} // namespace sph

@@ -1,0 +1,39 @@
+#pragma once
+// A run's state as a VTK file and back, from the registries alone (no array is named here):
+//
+//   points                  the field "position" (x^n), padded to 3D
+//   point data, display     every display field under its physical name: scalars, vectors as
+//                           3 components (2D, 1D: zeros for the missing ones), tensors as 3×3
+//                           with components named XX .. ZZ; double precision unless the field
+//                           says otherwise; the active scalars/vectors/tensors set
+//   point data, restart     restart-only fields as "restart:<name>", their native D, D×D or
+//                           D×D×D components in double precision
+//   field data              "TimeValue" (ParaView's time) and every run scalar as
+//                           "restart:<name>"
+//
+// Reading puts back every restart field (from its display array when it is also displayed:
+// the padding is exact) and every run scalar; anything missing or of another shape is an
+// InputError naming the file.
+
+#include "core/RunScalars.hpp"
+#include "io/VtuFile.hpp"
+#include "particles/ParticleFields.hpp"
+
+#include <string>
+
+namespace sph
+{
+
+// The name of the field written as the points.
+inline constexpr const char* positionField = "position";
+
+template <int D>
+void writeState(const ParticleFields<D>& fields, const RunScalars& scalars, double time,
+                VtuData& data);
+
+// Reads every restart field and run scalar of `data` (from `file`, for messages).
+template <int D>
+void readState(const VtuData& data, ParticleFields<D>& fields, const RunScalars& scalars,
+               const std::string& file);
+
+} // namespace sph
