@@ -159,37 +159,47 @@ struct DimRegistration
 InputError unknownModelError(const std::string& family, const std::string& name,
                              const SourceLocation& where, int dimension);
 
+// What a selector may add to the plain `type NAME;` selection.
+struct Selection
+{
+    std::string defaultType; // used when `type` is absent (empty: `type` is required)
+    Schema extraKeys;        // keys the caller reads from the same dictionary (e.g. `region`)
+};
+
 // Reads `type` from `dict`, finds the model, validates `dict` against its schema and builds it.
 // `dimension` sizes vector keys (0 when the family is dimension-independent and vectors are
 // not used).
 template <class Base>
 std::unique_ptr<Base> selectModel(const Dictionary& dict, const typename Base::Args& args,
-                                  int dimension)
+                                  int dimension, const Selection& selection = {})
 {
     const std::string family = Base::family;
     const Entry* type = dict.find("type");
-    if (!type || type->isDict() || type->items().size() != 1 ||
-        type->items()[0].kind() != Item::Kind::Word)
+    std::string name = selection.defaultType;
+    SourceLocation where = dict.location();
+    if (type && !type->isDict() && type->items().size() == 1 &&
+        type->items()[0].kind() == Item::Kind::Word)
+    {
+        name = type->items()[0].text();
+        where = type->items()[0].location();
+    }
+    else if (type || name.empty())
     {
         const auto names = RegistryStore::instance().names(family, Base::dimension);
-        const SourceLocation where = type ? type->valueLocation() : dict.location();
-        throw InputError(where,
+        throw InputError(type ? type->valueLocation() : dict.location(),
                          (type ? "'type' in '" + dict.displayName() + "' must be one word"
                                : "missing required key 'type' in '" + dict.displayName() + "'"),
                          {"Valid " + family + " types (" + std::to_string(names.size()) +
                           "): " + joinSorted(names)});
     }
-    const Item& typeItem = type->items()[0];
-    const ModelRecord* record = Registry<Base>::find(typeItem.text());
+    const ModelRecord* record = Registry<Base>::find(name);
     if (!record)
     {
-        throw unknownModelError(family, typeItem.text(), typeItem.location(), Base::dimension);
+        throw unknownModelError(family, name, where, Base::dimension);
     }
-    ValidationContext context;
-    context.dimension = dimension;
-    context.label = typeItem.text();
-    const Params params = record->schema().validate(dict, context);
-    return Registry<Base>::create(typeItem.text(), params, args);
+    Schema schema = record->schema();
+    schema.include(selection.extraKeys);
+    return Registry<Base>::create(name, schema.validate(dict, name, dimension), args);
 }
 
 // Validates `dict` against model `name` and builds it (for code and tests that know the name).
@@ -202,11 +212,7 @@ std::unique_ptr<Base> createModel(const std::string& name, const Dictionary& dic
     {
         throw unknownModelError(Base::family, name, dict.location(), Base::dimension);
     }
-    ValidationContext context;
-    context.dimension = dimension;
-    context.label = name;
-    const Params params = record->schema().validate(dict, context);
-    return Registry<Base>::create(name, params, args);
+    return Registry<Base>::create(name, record->schema().validate(dict, name, dimension), args);
 }
 
 } // namespace sph

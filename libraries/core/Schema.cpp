@@ -223,6 +223,19 @@ std::vector<std::string> Schema::requiredNames() const
     return result;
 }
 
+Params Schema::validate(const Dictionary& dict, const std::string& label, int dimension,
+                        TypeEntry type) const
+{
+    ValidationContext context;
+    context.dimension = dimension;
+    context.label = label;
+    if (type == TypeEntry::isKey)
+    {
+        context.ignoredKeys.clear();
+    }
+    return validate(dict, context);
+}
+
 Params Schema::validate(const Dictionary& dict, const ValidationContext& context) const
 {
     Params params;

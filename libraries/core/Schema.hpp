@@ -106,6 +106,14 @@ struct ValidationContext
     std::set<std::string> ignoredKeys{"type"}; // consumed by the caller (e.g. the selector)
 };
 
+// Whether a dictionary's `type` entry selects the model (and is skipped by validation, the
+// selector having read it) or is one of the schema's own keys.
+enum class TypeEntry
+{
+    selectsModel,
+    isKey
+};
+
 class Schema
 {
 public:
@@ -122,6 +130,10 @@ public:
     // for a missing required key, a value of the wrong type or out of range, or an undeclared
     // key (with "did you mean").
     Params validate(const Dictionary& dict, const ValidationContext& context) const;
+    // The same for a dictionary read by `label` ("a body", "studyDict"), with vectors of
+    // `dimension` components (0: any count).
+    Params validate(const Dictionary& dict, const std::string& label, int dimension = 0,
+                    TypeEntry type = TypeEntry::selectsModel) const;
 
     // Lines for -listTypes: "name  type  default  range  doc".
     std::vector<std::string> describe() const;

@@ -29,10 +29,7 @@ Schema ControlSettings::schema()
 ControlSettings ControlSettings::read(const CaseDictionaries& dicts)
 {
     const Dictionary& dict = dicts.get("controlDict");
-    ValidationContext context;
-    context.label = "controlDict";
-    context.ignoredKeys.clear();
-    const Params p = schema().validate(dict, context);
+    const Params p = schema().validate(dict, "controlDict", 0, TypeEntry::isKey);
     // Libraries first: function objects and models may come from them.
     if (const Entry* libs = dict.find("libs"))
     {
@@ -71,10 +68,7 @@ Schema SchemeSettings::schema()
 
 SchemeSettings SchemeSettings::read(const Dictionary& sphSchemes)
 {
-    ValidationContext context;
-    context.label = "sphSchemes";
-    context.ignoredKeys.clear();
-    const Params p = schema().validate(sphSchemes, context);
+    const Params p = schema().validate(sphSchemes, "sphSchemes", 0, TypeEntry::isKey);
     SchemeSettings settings;
     settings.dimension = static_cast<int>(p.integer("dimension"));
     settings.kernel = &p.dict("kernel");
@@ -92,11 +86,9 @@ int readDimension(const Dictionary& sphSchemes)
     {
         only.add(*entry);
     }
-    ValidationContext context;
-    context.label = "sphSchemes";
     const Params p = Schema()
                          .add(Key::integer("dimension", "space dimension of the case").range(1, 3))
-                         .validate(only, context);
+                         .validate(only, "sphSchemes");
     return static_cast<int>(p.integer("dimension"));
 }
 

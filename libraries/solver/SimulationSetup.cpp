@@ -44,56 +44,11 @@ Schema constraintSchema()
         .add(Key::dict("region", "which particles (by initial position)"));
 }
 
-// A field entry { region { ... }; type NAME; ...the field's keys }: validated against the
-// field type's schema plus `region`; `type` may be left out when there is a default.
-template <class Field>
-std::pair<std::unique_ptr<Field>, Params> selectField(const Dictionary& entry,
-                                                      const std::string& defaultType, int D)
+// A field or constraint entry reads its `region { ... }` besides the model's own keys.
+Selection withRegion(std::string defaultType = "")
 {
-    std::string type = defaultType;
-    SourceLocation where = entry.location();
-    if (const Entry* typeEntry = entry.find("type"))
-    {
-        if (typeEntry->isDict() || typeEntry->items().size() != 1 ||
-            typeEntry->items()[0].kind() != Item::Kind::Word)
-        {
-            throw InputError(typeEntry->valueLocation(), "'type' in '" + entry.displayName() + "' must be one word");
-        }
-        type = typeEntry->items()[0].text();
-        where = typeEntry->items()[0].location();
-    }
-    else if (type.empty())
-    {
-        throw InputError(entry.location(), "missing required key 'type' in '" + entry.displayName() + "'",
-                         {"Valid " + std::string(Field::family) + " types: " +
-                          joinSorted(Registry<Field>::names())});
-    }
-    const ModelRecord* record = Registry<Field>::find(type);
-    if (!record)
-    {
-        throw unknownModelError(Field::family, type, where, D);
-    }
-    Schema schema = record->schema();
-    schema.add(Key::dict("region", "which particles (by initial position)"));
-    ValidationContext context;
-    context.dimension = D;
-    context.label = type;
-    Params params = schema.validate(entry, context);
-    auto field = Registry<Field>::create(type, params, {});
-    return {std::move(field), std::move(params)};
-}
-
-Params validateNamed(const Schema& schema, const Dictionary& dict, const std::string& label, int D,
-                     bool typeIsKey = false)
-{
-    ValidationContext context;
-    context.dimension = D;
-    context.label = label;
-    if (typeIsKey)
-    {
-        context.ignoredKeys.clear();
-    }
-    return schema.validate(dict, context);
+    return {std::move(defaultType),
+            Schema().add(Key::dict("region", "which particles (by initial position)"))};
 }
 
 } // namespace
@@ -234,9 +189,9 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
     {
         Dictionary only("", bodies.location());
         only.add(*gravity);
-        const Params p = validateNamed(
-            Schema().add(Key::vector("gravity", "body-force acceleration [m/s^2]")), only,
-            "constant/bodies", D);
+        const Params p = Schema()
+                             .add(Key::vector("gravity", "body-force acceleration [m/s^2]"))
+                             .validate(only, "constant/bodies", D);
         gravity_ = toVec<D>(p.vector("gravity"));
     }
     for (std::size_t b = 0; b < bodyNames_.size(); ++b)
@@ -251,7 +206,7 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
                               " { material { type ...; } }"});
         }
         const Dictionary& dict = entry->dict();
-        const Params p = validateNamed(bodySchema(), dict, "a body", D, true);
+        const Params p = bodySchema().validate(dict, "a body", D, TypeEntry::isKey);
         materialModels_.push_back(selectModel<Material<D>>(p.dict("material"), {}, D));
         materials_.push_back(materialModels_.back().get());
         const BodyRange& range = particles_.bodies[b];
@@ -261,8 +216,9 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
             particles_.m[a] = materials_[b]->density() * particles_.V0[a];
             particles_.v[a] = velocity;
         }
-        const auto selected = [&](const Dictionary& owner, const Params& entryParams) {
-            const auto region = selectModel<Region<D>>(entryParams.dict("region"), {}, D);
+        // The particles of this body in the (validated) `region { ... }` of `owner`.
+        const auto selected = [&](const Dictionary& owner) {
+            const auto region = selectModel<Region<D>>(owner.find("region")->dict(), {}, D);
             const auto chosen = region->select(particles_.X, range.begin, range.end);
             if (chosen.empty())
             {
@@ -285,8 +241,9 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
                                                              "dictionary { region { ... }; type "
                                                              "...; }");
                 }
-                const auto [field, q] = selectField<DisplacementField<D>>(item.dict(), "", D);
-                for (const std::size_t a : selected(item.dict(), q))
+                const auto field =
+                    selectModel<DisplacementField<D>>(item.dict(), {}, D, withRegion());
+                for (const std::size_t a : selected(item.dict()))
                 {
                     particles_.x[a] += field->displacement(particles_.X[a], a);
                 }
@@ -303,8 +260,9 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
                                                              "dictionary { region { ... }; "
                                                              "velocity (...); }");
                 }
-                const auto [field, q] = selectField<VelocityField<D>>(item.dict(), "uniform", D);
-                for (const std::size_t a : selected(item.dict(), q))
+                const auto field =
+                    selectModel<VelocityField<D>>(item.dict(), {}, D, withRegion("uniform"));
+                for (const std::size_t a : selected(item.dict()))
                 {
                     particles_.v[a] = field->velocity(particles_.X[a]);
                 }
@@ -321,9 +279,8 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
                                                              "dictionary { type fixed; region { "
                                                              "... }; }");
                 }
-                const Params q =
-                    validateNamed(constraintSchema(), item.dict(), "a constraint", D, true);
-                for (const std::size_t a : selected(item.dict(), q))
+                constraintSchema().validate(item.dict(), "a constraint", D, TypeEntry::isKey);
+                for (const std::size_t a : selected(item.dict()))
                 {
                     particles_.fixed[a] = 1;
                     particles_.v[a].setZero();

@@ -12,17 +12,6 @@ namespace sph
 namespace
 {
 
-Params validate(const Schema& schema, const Dictionary& dict, const std::string& label,
-                bool typeIsKey = false)
-{
-    ValidationContext context;
-    context.label = label;
-    if (typeIsKey)
-    {
-        context.ignoredKeys.clear();
-    }
-    return schema.validate(dict, context);
-}
 
 Schema studySchema()
 {
@@ -152,11 +141,11 @@ void readReference(const Params& q, const StudyDefinition& study, StudyMetric& m
 
 StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
 {
-    const Params p = validate(studySchema(), studyDict, "studyDict");
+    const Params p = studySchema().validate(studyDict, "studyDict");
     StudyDefinition study;
     if (p.has("common"))
     {
-        const Params q = validate(levelSchema(), p.dict("common"), "common");
+        const Params q = levelSchema().validate(p.dict("common"), "common");
         study.common = {"common", q.stringList("particles"), q.stringList("solver")};
     }
     study.repeats = p.integer("repeats");
@@ -178,7 +167,7 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
                                  "level '" + levelEntry.key() + "' of axis '" + axis.name +
                                      "' must be a dictionary { particles (...); solver (...); }");
             }
-            const Params q = validate(levelSchema(), levelEntry.dict(), "a study level");
+            const Params q = levelSchema().validate(levelEntry.dict(), "a study level");
             axis.levels.push_back(
                 {levelEntry.key(), q.stringList("particles"), q.stringList("solver")});
         }
@@ -204,7 +193,7 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
             throw InputError(entry.keyLocation(),
                              "metric '" + entry.key() + "' must be a dictionary { type ...; }");
         }
-        const Params q = validate(metricSchema(), entry.dict(), "a metric", true);
+        const Params q = metricSchema().validate(entry.dict(), "a metric", 0, TypeEntry::isKey);
         StudyMetric metric;
         metric.name = entry.key();
         metric.type = q.word("type");
@@ -264,14 +253,10 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
     if (p.has("plot"))
     {
         const Params q =
-            validate(Schema()
-                         .add(Key::word("groupBy", "one line per level of this axis")
-                                  .choices(axisNames)
-                                  .optional())
-                         .add(Key::word("along", "the lines connect the levels of this axis")
-                                  .choices(axisNames)
-                                  .optional()),
-                     p.dict("plot"), "plot");
+            Schema()
+                .add(Key::word("groupBy", "one line per level of this axis").choices(axisNames).optional())
+                .add(Key::word("along", "the lines connect the levels of this axis").choices(axisNames).optional())
+                .validate(p.dict("plot"), "plot");
         if (q.has("groupBy"))
         {
             study.groupBy = q.word("groupBy");
@@ -306,10 +291,10 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
                                      "' must be a dictionary { min X; max Y; }",
                                  {"e.g. " + entry.key() + " { max 0.1; }"});
             }
-            const Params q = validate(Schema()
-                                          .add(Key::real("min", "lowest stable value").optional())
-                                          .add(Key::real("max", "highest stable value").optional()),
-                                      entry.dict(), "a stability bound");
+            const Params q = Schema()
+                                 .add(Key::real("min", "lowest stable value").optional())
+                                 .add(Key::real("max", "highest stable value").optional())
+                                 .validate(entry.dict(), "a stability bound");
             if (!q.has("min") && !q.has("max"))
             {
                 throw InputError(entry.keyLocation(),
