@@ -62,6 +62,14 @@ void listTypes(std::ostream& out, const std::string& family, const SourceLocatio
             {
                 out << "      " << key << "\n";
             }
+            if (!record->fields.empty())
+            {
+                out << "      per-particle fields (written to VTK/ as described in the README):\n";
+            }
+            for (const auto& field : record->fields)
+            {
+                out << "        " << field.describe() << "\n";
+            }
         }
         out << "\n";
     }

@@ -2,7 +2,9 @@
 // selectable by name; a missing library is a fatal error with dlerror and a checklist.
 #include "core/InputError.hpp"
 #include "solver/Applications.hpp"
-#include "support/CaseRunner.hpp"
+#include "io/PvdSeries.hpp"
+#include "io/VtuFile.hpp"
+#include "solver/SolverCases.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -48,4 +50,63 @@ TEST_CASE("a missing plugin library is fatal with dlerror and a checklist", "[pl
         CHECK_THAT(text, Catch::Contains("Checklist:"));
         CHECK_THAT(text, Catch::Contains("ldd"));
     }
+}
+
+namespace
+{
+
+// The Dyka bar with the plugin's history field: the largest speed of each particle.
+std::filesystem::path peakSpeedCase(const std::filesystem::path& into)
+{
+    const auto caseDir = test::copyTutorial("bar1D/dykaBar", into);
+    std::ofstream(caseDir / "system" / "controlDict")
+        << "libs (\"" SPH_TEST_PLUGIN "\");\nendTime 1.5e-3;\ncourant 0.01;\n"
+           "writeInterval 2e-4;\nfunctions { peak { type pluginPeakSpeed; } }\n";
+    REQUIRE(test::runParticles(caseDir) == 0);
+    return caseDir;
+}
+
+VtuData lastOutput(const std::filesystem::path& caseDir)
+{
+    PvdSeries series(caseDir / "VTK" / "dykaBar.pvd");
+    series.load();
+    REQUIRE(!series.entries().empty());
+    return readVtu(caseDir / "VTK" / series.entries().back().file);
+}
+
+} // namespace
+
+TEST_CASE("a plugin's own per-particle field is written, restarted and listed", "[plugin][fields]")
+{
+    test::TempDir one;
+    test::TempDir two;
+    const auto whole = peakSpeedCase(one.path());
+    const auto split = peakSpeedCase(two.path());
+    REQUIRE(test::runSolver(whole) == 0);
+    REQUIRE(test::runSolver(split, {"-set", "endTime=7e-4"}) == 0);
+    REQUIRE(test::runSolver(split, {"-set", "controlDict.startFrom=latestTime"}) == 0);
+
+    const VtuData data = lastOutput(whole);
+    // Written under its physical name, as a display field, in double precision.
+    REQUIRE(data.pointData.count("peakSpeed"));
+    const auto& peak = data.pointData.at("peakSpeed").values;
+    const auto& velocity = data.pointData.at("velocity").values;
+    REQUIRE(peak.size() == 40);
+    CHECK(peak[39] >= 5.0); // the loaded end started at 5 m/s
+    // It is history: somewhere the peak is well above the speed now.
+    bool remembers = false;
+    for (std::size_t a = 0; a < 40; ++a)
+    {
+        CHECK(peak[a] >= std::abs(velocity[3 * a]));
+        remembers = remembers || peak[a] > std::abs(velocity[3 * a]) + 1.0;
+    }
+    CHECK(remembers);
+    // A restart continues it bit for bit (every array and number of the last output).
+    test::requireIdenticalState(data, lastOutput(split));
+
+    std::ostringstream listing;
+    listTypes(listing, "functionObject");
+    CHECK_THAT(listing.str(), Catch::Contains("pluginPeakSpeed"));
+    CHECK_THAT(listing.str(),
+               Catch::Contains("peakSpeed  scalar, restart + display: largest |v| the particle"));
 }

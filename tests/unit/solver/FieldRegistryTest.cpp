@@ -1,0 +1,211 @@
+// The per-particle field registry (particles/ParticleFields.hpp) and the state file written
+// from it (solver/StateFile.hpp): declarations, the file layout ParaView sees, and an exact
+// round trip of every kind of restart field in 1D, 2D and 3D.
+#include "io/VtuFile.hpp"
+#include "solver/StateFile.hpp"
+#include "support/TestSupport.hpp"
+
+#include <random>
+
+using namespace sph;
+
+TEST_CASE("field declarations: file names, roles and impossible combinations", "[fields]")
+{
+    const FieldSpec shown = FieldSpec::vector("velocity", "v [m/s]").display();
+    const FieldSpec hidden = FieldSpec::vector("velocityHalfStep", "v^{n-1/2} [m/s]").restart();
+    const FieldSpec both = FieldSpec::scalar("plasticStrain", "history").restart().display();
+    CHECK(shown.fileName() == "velocity");
+    CHECK(hidden.fileName() == "restart:velocityHalfStep");
+    CHECK(both.fileName() == "plasticStrain");
+    CHECK(FieldSpec::scalar("work", "scratch").isScratch());
+    CHECK(both.describe() == "plasticStrain  scalar, restart + display: history");
+
+    CHECK_THROWS_AS(FieldSpec::scalar("x", "").restart().singlePrecision(), std::logic_error);
+    CHECK_THROWS_AS(FieldSpec::thirdOrderTensor("K", "").display(), std::logic_error);
+    CHECK_THROWS_AS(FieldSpec::scalar("J", "").active(), std::logic_error); // not displayed
+    CHECK_THROWS_AS(FieldSpec::scalar("two words", ""), std::logic_error);
+    CHECK_THROWS_AS(FieldSpec::scalar("restart:x", ""), std::logic_error);
+}
+
+TEST_CASE("the registry: bound, owned and derived fields", "[fields]")
+{
+    ParticleFields<2> fields;
+    fields.setSize(4);
+    std::vector<Vec<2>> x(4, Vec<2>::Ones());
+    fields.bind(FieldSpec::vector("position", "x").restart().display(), x);
+    const FieldSpec historySpec = FieldSpec::scalar("history", "h").restart().display();
+    std::vector<double>& history = fields.declare<double>(historySpec, 7.0);
+    CHECK(history == std::vector<double>(4, 7.0));
+    // A second model instance declaring the same field shares the array.
+    CHECK(&fields.declare<double>(historySpec) == &history);
+    fields.derive<double>(FieldSpec::scalar("sum", "x + y").display(),
+                          [&](std::size_t a) { return x[a].sum(); });
+
+    CHECK_THROWS_AS(fields.bind(FieldSpec::scalar("position", "again"), history), std::logic_error);
+    CHECK_THROWS_AS(fields.declare<double>(FieldSpec::vector("wrongKind", "")), std::logic_error);
+    CHECK_THROWS_AS(fields.derive<double>(FieldSpec::scalar("restartDerived", "").restart(),
+                                          [](std::size_t) { return 0.0; }),
+                    std::logic_error);
+
+    double value[4];
+    fields.find("sum")->array->get(2, value);
+    CHECK(value[0] == 2.0);
+    // Resizing reaches bound and owned arrays; new particles get each field's fill value.
+    fields.resize(6);
+    CHECK(x.size() == 6);
+    CHECK(history.size() == 6);
+    CHECK(history[5] == 7.0);
+    CHECK(x[5] == Vec<2>::Zero());
+}
+
+namespace
+{
+
+// Every kind of field, filled with random numbers (restart and display), written to a file,
+// read back into zeroed arrays: the restart fields come back bit for bit.
+template <int D>
+void roundTrip(const std::filesystem::path& file)
+{
+    const std::size_t n = 5;
+    std::mt19937 random(D);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    struct Arrays
+    {
+        std::vector<Vec<D>> x, v;
+        std::vector<double> s;
+        std::vector<int> id;
+        std::vector<std::uint8_t> flag;
+        std::vector<Mat<D>> F, P;
+        std::vector<Tensor3<D>> K;
+    };
+    const auto fill = [&](Arrays& arrays, bool zero) {
+        const auto r = [&] { return zero ? 0.0 : uniform(random); };
+        arrays.x.assign(n, Vec<D>::Zero());
+        arrays.v = arrays.x;
+        arrays.s.assign(n, 0.0);
+        arrays.id.assign(n, 0);
+        arrays.flag.assign(n, 0);
+        arrays.F.assign(n, Mat<D>::Zero());
+        arrays.P = arrays.F;
+        arrays.K.assign(n, Tensor3<D>::zero());
+        for (std::size_t a = 0; a < n; ++a)
+        {
+            arrays.x[a] = arrays.x[a].unaryExpr([&](double) { return r(); });
+            arrays.v[a] = arrays.v[a].unaryExpr([&](double) { return r(); });
+            arrays.s[a] = r();
+            arrays.id[a] = zero ? 0 : static_cast<int>(a) - 2;
+            arrays.flag[a] = zero ? 0 : static_cast<std::uint8_t>(a % 2);
+            arrays.F[a] = arrays.F[a].unaryExpr([&](double) { return r(); });
+            arrays.P[a] = arrays.P[a].unaryExpr([&](double) { return r(); });
+            for (auto& slice : arrays.K[a].slice)
+            {
+                slice = slice.unaryExpr([&](double) { return r(); });
+            }
+        }
+    };
+    const auto declare = [](ParticleFields<D>& fields, Arrays& arrays) {
+        fields.setSize(n);
+        fields.bind(FieldSpec::vector(positionField, "x").restart().display(), arrays.x);
+        fields.bind(FieldSpec::vector("velocity", "v").restart().display().active(), arrays.v);
+        fields.bind(FieldSpec::scalar("volume", "s").restart(), arrays.s);
+        fields.bind(FieldSpec::integer("id", "i").restart().display(), arrays.id);
+        fields.bind(FieldSpec::integer("flag", "f").restart(), arrays.flag);
+        fields.bind(FieldSpec::tensor("F", "F").restart().display().padding(TensorPadding::identity),
+                    arrays.F);
+        fields.bind(FieldSpec::tensor("P", "P").display().singlePrecision(), arrays.P);
+        fields.bind(FieldSpec::thirdOrderTensor("K", "K").restart(), arrays.K);
+    };
+    Arrays written;
+    fill(written, false);
+    ParticleFields<D> out;
+    declare(out, written);
+    long step = 42;
+    double deltaT = uniform(random);
+    bool flag = true;
+    RunScalars outScalars;
+    outScalars.bind("step", step);
+    outScalars.bind("deltaT", deltaT);
+    outScalars.bind("flag", flag);
+    VtuData data;
+    writeState<D>(out, outScalars, 0.5, data);
+    writeVtu(file, data);
+
+    const VtuData read = readVtu(file);
+    // The layout ParaView sees.
+    CHECK(read.activeVectors == "velocity");
+    CHECK(read.pointData.at("velocity").components == 3);
+    CHECK(read.pointData.at("F").components == 9);
+    CHECK(read.pointData.at("F").componentNames.at(8) == "ZZ");
+    CHECK(read.pointData.at("P").readFromSingles);
+    CHECK(!read.pointData.at("F").readFromSingles);
+    CHECK(read.pointData.at("restart:volume").components == 1);
+    CHECK(read.pointData.at("restart:K").components == D * D * D);
+    CHECK(read.pointData.count("position") == 0); // the points
+    CHECK(read.fieldData.at("TimeValue").values.at(0) == 0.5);
+    CHECK(read.fieldData.at("restart:step").values.at(0) == 42.0);
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        const auto& v = read.pointData.at("velocity").values;
+        const auto& F = read.pointData.at("F").values;
+        const auto& P = read.pointData.at("P").values;
+        for (int c = D; c < 3; ++c)
+        {
+            CHECK(v[3 * a + static_cast<std::size_t>(c)] == 0.0);
+            CHECK(F[9 * a + static_cast<std::size_t>(4 * c)] == 1.0); // identity padding
+            CHECK(P[9 * a + static_cast<std::size_t>(4 * c)] == 0.0); // zero padding
+        }
+        CHECK(F[9 * a + 1] == (D > 1 ? written.F[a](0, 1) : 0.0)); // row-major
+    }
+
+    Arrays back;
+    fill(back, true);
+    ParticleFields<D> in;
+    declare(in, back);
+    long stepBack = 0;
+    double deltaTBack = 0.0;
+    bool flagBack = false;
+    RunScalars inScalars;
+    inScalars.bind("step", stepBack);
+    inScalars.bind("deltaT", deltaTBack);
+    inScalars.bind("flag", flagBack);
+    readState<D>(read, in, inScalars, file.string());
+    CHECK(back.x == written.x);
+    CHECK(back.v == written.v);
+    CHECK(back.s == written.s);
+    CHECK(back.id == written.id);
+    CHECK(back.flag == written.flag);
+    CHECK(back.F == written.F);
+    CHECK(back.P == std::vector<Mat<D>>(n, Mat<D>::Zero())); // display only: not read
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        for (int k = 0; k < D; ++k)
+        {
+            CHECK(back.K[a].slice[static_cast<std::size_t>(k)] ==
+                  written.K[a].slice[static_cast<std::size_t>(k)]);
+        }
+    }
+    CHECK(stepBack == 42);
+    CHECK(deltaTBack == deltaT);
+    CHECK(flagBack);
+
+    // A file without one of the restart arrays, or with another shape, is an input error
+    // naming the file and the array.
+    VtuData missing = read;
+    missing.pointData.erase("restart:K");
+    CHECK_THROWS_WITH(readState<D>(missing, in, inScalars, "old.vtu"),
+                      Catch::Contains("cannot restart from 'old.vtu': it has no array 'restart:K'"));
+    VtuData reshaped = read;
+    reshaped.pointData.at("velocity").components = 1;
+    CHECK_THROWS_WITH(readState<D>(reshaped, in, inScalars, "other.vtu"),
+                      Catch::Contains("'velocity' has 1 components, not 3"));
+}
+
+} // namespace
+
+TEST_CASE("the state file restores every kind of restart field exactly", "[fields]")
+{
+    test::TempDir dir;
+    roundTrip<1>(dir.path() / "one.vtu");
+    roundTrip<2>(dir.path() / "two.vtu");
+    roundTrip<3>(dir.path() / "three.vtu");
+}
