@@ -27,7 +27,7 @@ public:
     // K is only needed when the scheme uses it and the reference moves (TL: K = 0 always).
     bool carriesK() const
     {
-        return scheme_.carriesReferenceGradient() && formulation_.updatesReference();
+        return scheme_.referenceNeeds(kernel_).gradientOfF && formulation_.updatesReference();
     }
 
     // x^r = X, V^r = V0, F^r = I; builds everything. `status` names a singular particle.
@@ -104,22 +104,15 @@ public:
 private:
     ForceStatus rebuild(const std::vector<int>& body)
     {
-        ForceStatus status;
-        long bad = ref_.rebuild(kernel_, body, scheme_.searchRadius(kernel_),
-                                formulation_.updatesReference(), scheme_.needsKernelValues());
+        const ReferenceNeeds needs = scheme_.referenceNeeds(kernel_);
+        const long bad = ref_.rebuild(kernel_, body, needs.searchRadius,
+                                      formulation_.updatesReference(), needs.kernelValues);
         if (bad >= 0)
         {
-            status.badParticle = bad;
-            status.badQuantity = "corrected-gradient matrix M (too few neighbours in x^r)";
-            return status;
+            return ForceStatus::failed(FailureKind::singularReference, bad, 0.0,
+                                       "corrected-gradient matrix M (too few neighbours in x^r)");
         }
-        bad = scheme_.prepare(ref_);
-        if (bad >= 0)
-        {
-            status.badParticle = bad;
-            status.badQuantity = "least-squares matrix Z (too few neighbours in x^r)";
-        }
-        return status;
+        return scheme_.prepare(ref_);
     }
 
     const Formulation<D>& formulation_;

@@ -79,12 +79,12 @@ template <int D>
 void Simulation<D>::fail(const ForceStatus& status, const std::string& when)
 {
     std::ostringstream message;
-    message << status.badQuantity;
-    if (status.badQuantity == "det F")
+    message << status.message;
+    if (status.failure == FailureKind::nonPositiveJacobian)
     {
         message << " = " << status.badValue << " <= 0";
     }
-    else if (status.badQuantity == "internal force")
+    else if (status.failure == FailureKind::nonFiniteForce)
     {
         message << " is not finite";
     }
@@ -219,13 +219,12 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
             }
             if (!(stable > 1e-6 * firstDeltaT_) || !std::isfinite(stable))
             {
-                ForceStatus collapse;
-                collapse.badParticle = static_cast<long>(fastest);
-                collapse.badValue = stable;
-                collapse.badQuantity = "time step (collapsed to " + std::to_string(stable) +
-                                       " s from " + std::to_string(firstDeltaT_) +
-                                       " s; the largest wave speed is here)";
-                fail(collapse, "computing the time step");
+                fail(ForceStatus::failed(FailureKind::timeStepCollapse, static_cast<long>(fastest),
+                                         stable,
+                                         "time step (collapsed to " + std::to_string(stable) +
+                                             " s from " + std::to_string(firstDeltaT_) +
+                                             " s; the largest wave speed is here)"),
+                     "computing the time step");
             }
             deltaT_ = stable;
         }
@@ -351,9 +350,9 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         // 9. Particles must not pass each other along a bar.
         if (const long crossed = crossingParticle(); crossed >= 0)
         {
-            ForceStatus crossing;
-            crossing.badParticle = crossed;
-            crossing.badQuantity = "particle order (it passed its neighbour)";
+            const ForceStatus crossing =
+                ForceStatus::failed(FailureKind::particleCrossing, crossed, 0.0,
+                                    "particle order (it passed its neighbour)");
             time_ += dt;
             ++step_;
             fail(crossing, "after moving the particles");

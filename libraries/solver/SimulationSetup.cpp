@@ -94,7 +94,7 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
         const Entry* hOverDx = schemes.kernel->find("hOverDx");
         throw InputError(hOverDx ? hOverDx->valueLocation() : schemes.kernel->location(),
                          particleName(static_cast<std::size_t>(status.badParticle)) +
-                             " has too few neighbours: its " + status.badQuantity +
+                             " has too few neighbours: its " + status.message +
                              " is singular in the initial configuration",
                          {"Increase hOverDx (now " + std::to_string(kernel_->hOverDx()) +
                               ") or check the geometry in system/particlesDict (isolated "

@@ -90,16 +90,15 @@ struct ChunkTally
 {
     double energy = 0.0;
     long badParticle = -1;
-    double badValue = 0.0;
-    const char* badQuantity = "";
+    double badValue = 0.0; // its det F
 
-    void flag(std::size_t particle, double value, const char* quantity)
+    // det F <= 0 (or not finite) at `particle`.
+    void flagJacobian(std::size_t particle, double J)
     {
         if (badParticle < 0)
         {
             badParticle = static_cast<long>(particle);
-            badValue = value;
-            badQuantity = quantity;
+            badValue = J;
         }
     }
 };
@@ -112,9 +111,10 @@ inline ForceStatus combine(const std::vector<ChunkTally>& tallies)
         status.strainEnergy += tally.energy;
         if (status.ok() && tally.badParticle >= 0)
         {
-            status.badParticle = tally.badParticle;
-            status.badValue = tally.badValue;
-            status.badQuantity = tally.badQuantity;
+            const double energy = status.strainEnergy;
+            status = ForceStatus::failed(FailureKind::nonPositiveJacobian, tally.badParticle,
+                                         tally.badValue, "det F");
+            status.strainEnergy = energy;
         }
     }
     return status;
@@ -140,9 +140,8 @@ void checkForces(const std::vector<Vec<D>>& T, ForceStatus& status)
     {
         if (!T[c].allFinite())
         {
-            status.badParticle = static_cast<long>(c);
-            status.badValue = T[c].norm();
-            status.badQuantity = "internal force";
+            status = ForceStatus::failed(FailureKind::nonFiniteForce, static_cast<long>(c),
+                                         T[c].norm(), "internal force");
             return;
         }
     }
@@ -182,14 +181,8 @@ public:
                 bad = static_cast<long>(a);
             }
         }
-        ForceStatus status;
-        if (bad >= 0)
-        {
-            status.badParticle = bad;
-            status.badValue = badJ;
-            status.badQuantity = "det F";
-        }
-        return status;
+        return bad < 0 ? ForceStatus{}
+                       : ForceStatus::failed(FailureKind::nonPositiveJacobian, bad, badJ, "det F");
     }
 
     // f (the incremental gradient) is stored in *fOut when given (hourglass control uses it).
@@ -232,7 +225,7 @@ public:
                     double J;
                     if (!admissible<D>(out.F[a], J))
                     {
-                        tally.flag(a, J, "det F");
+                        tally.flagJacobian(a, J);
                         out.F[a].setIdentity(); // keep the arithmetic finite; the run stops
                     }
                 }

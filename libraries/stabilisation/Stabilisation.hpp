@@ -46,14 +46,46 @@ struct ForceOutput
     std::vector<Mat<D>>& P; // first Piola-Kirchhoff stress at F
 };
 
+// Why a state cannot be used. The solver words its diagnosis by the kind; the message is the
+// scheme's own description of the quantity (e.g. which matrix is singular).
+enum class FailureKind
+{
+    none,
+    nonPositiveJacobian, // det F <= 0 or not finite (value: det F)
+    nonFiniteForce,      // (value: |T|)
+    singularReference,   // a matrix built from a reference neighbourhood is singular
+    timeStepCollapse,    // (value: the step)
+    particleCrossing     // 1D: a particle passed its neighbour
+};
+
 // A force evaluation's energy and, if the state is unusable, the first bad particle.
 struct ForceStatus
 {
     double strainEnergy = 0.0; // Π, when asked for
-    long badParticle = -1;     // first particle with det F <= 0 or a non-finite value
-    double badValue = 0.0;     // its det F
-    std::string badQuantity;   // "det F", "force", ...
-    bool ok() const { return badParticle < 0; }
+    long badParticle = -1;     // the first bad particle
+    double badValue = 0.0;     // the value that made it bad (see FailureKind)
+    FailureKind failure = FailureKind::none;
+    std::string message;       // what is bad: "det F", "least-squares matrix Z (...)", ...
+    bool ok() const { return failure == FailureKind::none; }
+
+    static ForceStatus failed(FailureKind kind, long particle, double value, std::string message)
+    {
+        ForceStatus status;
+        status.failure = kind;
+        status.badParticle = particle;
+        status.badValue = value;
+        status.message = std::move(message);
+        return status;
+    }
+};
+
+// What a scheme needs the reference configuration to carry.
+struct ReferenceNeeds
+{
+    double searchRadius = 0.0;  // of the neighbour search (the kernel support unless more)
+    bool gradientOfF = false;   // K = ∂F^r/∂x^r (the gradient-of-F scheme)
+    bool kernelValues = false;  // W_ab per pair (the gradients are always there); a scheme
+                                // that does not read them does not pay for storing them
 };
 
 template <int D>
@@ -69,16 +101,13 @@ public:
 
     virtual ~Stabilisation() = default;
 
-    // Radius of the reference neighbour search (the kernel support unless the scheme needs more).
-    virtual double searchRadius(const Kernel& kernel) const { return kernel.supportRadius(); }
-    // Whether the reference configuration must carry K = ∂F^r/∂x^r (the gradient-of-F scheme).
-    virtual bool carriesReferenceGradient() const { return false; }
-    // Whether the scheme reads the kernel values W_ab of the reference pairs (the gradients
-    // are always there); a scheme that does not, does not pay for storing them.
-    virtual bool needsKernelValues() const { return false; }
+    virtual ReferenceNeeds referenceNeeds(const Kernel& kernel) const
+    {
+        return {kernel.supportRadius(), false, false};
+    }
     // Precomputes what depends only on the reference configuration; called after every rebuild.
-    // Returns the first particle where that data is singular, or -1.
-    virtual long prepare(const ReferenceConfiguration<D>& ref) = 0;
+    // A singular neighbourhood is a singularReference failure whose message names the matrix.
+    virtual ForceStatus prepare(const ReferenceConfiguration<D>& ref) = 0;
 
     // F = f F^r at positions x (for moving the reference configuration to x). Schemes that
     // carry K also return the new K = G f^{-1} (spec §6.5) in newK.

@@ -75,7 +75,7 @@ MatDM contractMonomials(const Tensor3<D>& B)
 } // namespace
 
 template <int D>
-long GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
+ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
 {
     const NeighbourList& list = ref.neighbours;
     const std::size_t n = ref.size();
@@ -121,7 +121,12 @@ long GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
         s_[a] = s;
         Y_[a] = Y;
     }
-    return singular < 0 ? -1 : static_cast<long>(n) - singular;
+    if (singular < 0)
+    {
+        return {};
+    }
+    return ForceStatus::failed(FailureKind::singularReference, static_cast<long>(n) - singular,
+                               0.0, "least-squares matrix Z (too few neighbours in x^r)");
 }
 
 template <int D>
@@ -238,9 +243,8 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
         double J;
         if (!admissible<D>(F[a], J))
         {
-            status.badParticle = static_cast<long>(a);
-            status.badValue = J;
-            status.badQuantity = "det F";
+            status = ForceStatus::failed(FailureKind::nonPositiveJacobian, static_cast<long>(a), J,
+                                         "det F");
             break;
         }
     }
@@ -281,7 +285,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 double J;
                 if (!admissible<D>(kin.F, J))
                 {
-                    tally.flag(a, J, "det F");
+                    tally.flagJacobian(a, J);
                     kin.F.setIdentity(); // keep the arithmetic finite; the run stops
                     kin.G = Tensor3<D>::zero();
                 }

@@ -31,9 +31,11 @@ public:
     static Schema schema() { return Schema(); }
     GradF(const Params&, const typename Stabilisation<D>::Args&) {}
 
-    bool carriesReferenceGradient() const override { return true; }
-    bool needsKernelValues() const override { return true; }
-    long prepare(const ReferenceConfiguration<D>& ref) override;
+    ReferenceNeeds referenceNeeds(const Kernel& kernel) const override
+    {
+        return {kernel.supportRadius(), true, true};
+    }
+    ForceStatus prepare(const ReferenceConfiguration<D>& ref) override;
     ForceStatus referenceUpdate(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
                                 std::vector<Mat<D>>& F,
                                 std::vector<Tensor3<D>>* newK) const override;

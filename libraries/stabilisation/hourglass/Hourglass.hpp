@@ -25,8 +25,11 @@ public:
     static Schema schema();
     Hourglass(const Params& params, const typename Stabilisation<D>::Args& args);
 
-    long prepare(const ReferenceConfiguration<D>&) override { return -1; }
-    bool needsKernelValues() const override { return true; }
+    ForceStatus prepare(const ReferenceConfiguration<D>&) override { return {}; }
+    ReferenceNeeds referenceNeeds(const Kernel& kernel) const override
+    {
+        return {kernel.supportRadius(), false, true};
+    }
     ForceStatus referenceUpdate(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
                                 std::vector<Mat<D>>& F, std::vector<Tensor3<D>>*) const override
     {

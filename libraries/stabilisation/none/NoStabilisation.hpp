@@ -17,7 +17,7 @@ public:
     static Schema schema() { return Schema(); }
     NoStabilisation(const Params&, const typename Stabilisation<D>::Args&) {}
 
-    long prepare(const ReferenceConfiguration<D>&) override { return -1; }
+    ForceStatus prepare(const ReferenceConfiguration<D>&) override { return {}; }
     ForceStatus referenceUpdate(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
                                 std::vector<Mat<D>>& F, std::vector<Tensor3<D>>*) const override
     {

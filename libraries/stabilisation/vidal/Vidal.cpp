@@ -49,7 +49,7 @@ Vec<D> kernelGradient(const Kernel& kernel, const Vec<D>& v)
 } // namespace
 
 template <int D>
-long Vidal<D>::prepare(const ReferenceConfiguration<D>& ref)
+ForceStatus Vidal<D>::prepare(const ReferenceConfiguration<D>& ref)
 {
     const NeighbourList& list = ref.neighbours;
     const std::size_t n = ref.size();
@@ -66,8 +66,12 @@ long Vidal<D>::prepare(const ReferenceConfiguration<D>& ref)
             in_[k] = kernelGradient<D>(kernel_, Vec<D>(ref.x[b] + shift - ref.x[a]));
         }
     }
-    return corrected_.build(list, ref.x, ref.V,
-                            [this](std::size_t, std::size_t k) { return out_[k]; });
+    const long singular = corrected_.build(list, ref.x, ref.V,
+                                           [this](std::size_t, std::size_t k) { return out_[k]; });
+    return singular < 0 ? ForceStatus{}
+                        : ForceStatus::failed(FailureKind::singularReference, singular, 0.0,
+                                              "shifted corrected-gradient matrix (too few "
+                                              "neighbours in x^r)");
 }
 
 template <int D>

@@ -44,11 +44,11 @@ public:
     static Schema schema();
     Vidal(const Params& params, const typename Stabilisation<D>::Args& args);
 
-    double searchRadius(const Kernel& kernel) const override
+    ReferenceNeeds referenceNeeds(const Kernel& kernel) const override
     {
-        return kernel.supportRadius() + beta_.norm() * kernel.h();
+        return {kernel.supportRadius() + beta_.norm() * kernel.h(), false, false};
     }
-    long prepare(const ReferenceConfiguration<D>& ref) override;
+    ForceStatus prepare(const ReferenceConfiguration<D>& ref) override;
     ForceStatus referenceUpdate(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
                                 std::vector<Mat<D>>& F, std::vector<Tensor3<D>>*) const override
     {

@@ -177,12 +177,12 @@ struct SchemeFixture
         }
         kernel = makeKernel(kernelName, D, spacing, hOverDx);
         scheme = build<Stabilisation<D>>(schemeText, {kernel.get()}, D);
-        if (!scheme->carriesReferenceGradient())
+        if (!scheme->referenceNeeds(*kernel).gradientOfF)
         {
             ref.K.clear();
         }
-        REQUIRE(ref.rebuild(*kernel, body, scheme->searchRadius(*kernel)) < 0);
-        REQUIRE(scheme->prepare(ref) < 0);
+        REQUIRE(ref.rebuild(*kernel, body, scheme->referenceNeeds(*kernel).searchRadius) < 0);
+        REQUIRE(scheme->prepare(ref).ok());
     }
 
     ForceInput<D> input(const std::vector<Vec<D>>& x) const

@@ -218,13 +218,13 @@ void checkRigidMotion(const std::string& name, bool updated)
             fixture.ref.x[a] = Q0 * fixture.X[a] + Vec<D>::Constant(0.3);
             fixture.ref.F[a] = Q0;
         }
-        if (fixture.scheme->carriesReferenceGradient())
+        if (fixture.scheme->referenceNeeds(*fixture.kernel).gradientOfF)
         {
             fixture.ref.K.assign(fixture.X.size(), Tensor3<D>::zero());
         }
         REQUIRE(fixture.ref.rebuild(*fixture.kernel, fixture.body,
-                                    fixture.scheme->searchRadius(*fixture.kernel)) < 0);
-        REQUIRE(fixture.scheme->prepare(fixture.ref) < 0);
+                                    fixture.scheme->referenceNeeds(*fixture.kernel).searchRadius) < 0);
+        REQUIRE(fixture.scheme->prepare(fixture.ref).ok());
     }
     const Mat<D> Q = rotation<D>(1.1);
     for (int motion = 0; motion < 2; ++motion)
