@@ -27,6 +27,19 @@
 namespace sph
 {
 
+// The energy balance at a time level (spec §10), kept by the solver's energy audit:
+//   total = kinetic + strain - external - contact, conserved by an exact integrator;
+//   drift = (total - total at the first level) / |total at the first level|.
+struct EnergyBalance
+{
+    double kinetic = 0.0;  // Σ ½ m |v^n|^2
+    double strain = 0.0;   // Π^n of the scheme
+    double external = 0.0; // work of external (body) forces since t = 0
+    double contact = 0.0;  // work of contact forces since t = 0
+    double total = 0.0;
+    double drift = 0.0;
+};
+
 // What a function object sees at time level n (after the forces at x^n).
 template <int D>
 struct StepState
@@ -39,10 +52,9 @@ struct StepState
     const ReferenceConfiguration<D>& reference;
     const Kernel& kernel;
     const std::vector<std::string>& bodyNames;
-    bool hasStrainEnergy = false;
-    double strainEnergy = 0.0; // Π^n of the scheme, when hasStrainEnergy
-    double externalWork = 0.0; // work of external (body) forces since t = 0
-    double contactWork = 0.0;  // work of contact forces since t = 0
+    // The energy balance of this level; null unless some function object (needsEnergy) or
+    // the run log asked for it (the strain energy costs a little in every scheme).
+    const EnergyBalance* energy = nullptr;
 };
 
 template <int D>
@@ -69,8 +81,8 @@ public:
     // The prefix of this object's saveState() keys in the solver's restart data.
     std::string statePrefix() const { return "fo:" + name_ + ":"; }
 
-    // Whether execute() at (step, time) needs the strain energy.
-    virtual bool needsStrainEnergy(long step, double time) const
+    // Whether execute() at (step, time) needs the energy balance.
+    virtual bool needsEnergy(long step, double time) const
     {
         (void)step;
         (void)time;

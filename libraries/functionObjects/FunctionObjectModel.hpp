@@ -1,7 +1,8 @@
 #pragma once
 // The common part of the function objects: the `writeInterval` key, the output table and the
-// decision whether a row is due.
+// decision whether a row is due (core/WriteSchedule.hpp, the rule of every output).
 
+#include "core/WriteSchedule.hpp"
 #include "functionObjects/DatFile.hpp"
 #include "functionObjects/FunctionObject.hpp"
 
@@ -26,26 +27,26 @@ public:
     {
         if (!restarted)
         {
-            nextRow_ = 0.0;
+            schedule_.restart();
         }
         file_->open(startTime, restarted);
     }
     void saveState(std::map<std::string, double>& state) const override
     {
-        state["nextRow"] = nextRow_;
+        state["nextRow"] = schedule_.next();
     }
     void restoreState(const std::map<std::string, double>& state) override
     {
         const auto found = state.find("nextRow");
         if (found != state.end())
         {
-            nextRow_ = found->second;
+            schedule_.next() = found->second;
         }
     }
 
 protected:
     FunctionObjectModel(const Params& params, const typename FunctionObject<D>::Args& args)
-        : FunctionObject<D>(args.name), interval_(params.real("writeInterval")),
+        : FunctionObject<D>(args.name), schedule_(params.real("writeInterval")),
           folder_(args.caseDir / "postProcessing" / args.name)
     {
     }
@@ -57,29 +58,19 @@ protected:
     }
     // Whether a row is due at this time level: the first level at or after each multiple of
     // the interval (deltaT: the step size, for a round-off tolerance).
-    bool rowDue(double time, double deltaT) const
-    {
-        return interval_ <= 0.0 || time >= nextRow_ - 1e-6 * deltaT;
-    }
+    bool rowDue(double time, double deltaT) const { return schedule_.due(time, deltaT); }
     void writeRow(double time, double deltaT, const std::vector<double>& values)
     {
         file_->write(time, values);
-        if (interval_ > 0.0)
-        {
-            while (nextRow_ <= time + 1e-6 * deltaT)
-            {
-                nextRow_ += interval_;
-            }
-        }
+        schedule_.written(time, deltaT);
     }
-    double interval() const { return interval_; }
+    double interval() const { return schedule_.interval(); }
     const std::filesystem::path& folder() const { return folder_; }
 
 private:
-    double interval_;
+    WriteSchedule schedule_;
     std::filesystem::path folder_;
     std::unique_ptr<DatFile> file_;
-    double nextRow_ = 0.0;
 };
 
 } // namespace sph

@@ -237,6 +237,13 @@ public:
         return result;
     }
 
+    // A field seen through an array of one's own (e.g. one whose written values come from
+    // elsewhere than where a restart puts them back).
+    void bindArray(const FieldSpec& spec, std::unique_ptr<FieldArray> array)
+    {
+        add(spec, std::move(array));
+    }
+
     // A display quantity computed from stored fields when it is written.
     template <class T>
     void derive(const FieldSpec& spec, std::type_identity_t<std::function<T(std::size_t)>> value)

@@ -63,7 +63,9 @@ Schema SchemeSettings::schema()
         .add(Key::dict("formulation", "{ type totalLagrangian; } or { type updatedLagrangian; }"))
         .add(Key::dict("stabilisation", "internal-force scheme { type none | vidal | hourglass | "
                                         "gradF; }"))
-        .add(Key::dict("contact", "contact between bodies { type none | repulsion; }").optional());
+        .add(Key::dict("contact", "contact between bodies { type none | repulsion; }").optional())
+        .add(Key::dict("timeIntegration", "time integrator { type leapfrog; } (default leapfrog)")
+                 .optional());
 }
 
 SchemeSettings SchemeSettings::read(const Dictionary& sphSchemes)
@@ -75,6 +77,7 @@ SchemeSettings SchemeSettings::read(const Dictionary& sphSchemes)
     settings.formulation = &p.dict("formulation");
     settings.stabilisation = &p.dict("stabilisation");
     settings.contact = p.has("contact") ? &p.dict("contact") : nullptr;
+    settings.timeIntegration = p.has("timeIntegration") ? &p.dict("timeIntegration") : nullptr;
     return settings;
 }
 

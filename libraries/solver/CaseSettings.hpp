@@ -17,7 +17,8 @@
 //   kernel        | { type cubicSpline; hOverDx 1.5; }         | required
 //   formulation   | { type totalLagrangian; }                  | required
 //   stabilisation | { type gradF; }                            | required
-//   contact       | { type none; }                             | { type none; }
+//   contact         | { type none; }                           | { type none; }
+//   timeIntegration | { type leapfrog; }                       | { type leapfrog; }
 
 #include "core/CaseDictionaries.hpp"
 #include "core/Schema.hpp"
@@ -51,6 +52,7 @@ struct SchemeSettings
     const Dictionary* formulation = nullptr;
     const Dictionary* stabilisation = nullptr;
     const Dictionary* contact = nullptr; // null: none
+    const Dictionary* timeIntegration = nullptr; // null: leapfrog
 
     static Schema schema();
     static SchemeSettings read(const Dictionary& sphSchemes);

@@ -1,26 +1,33 @@
 #pragma once
-// One run of the solid solver in dimension D: builds every model named by the case, then
-// advances the particles with the leapfrog scheme of seed eqs. (15)-(16) (spec §10):
+// One run of the solid solver in dimension D: builds every model named by the case, then runs
+// the time loop (spec §10), one time level n after another:
 //
-//   a^n = (T(x^n) + m g)/m,  v^{n+1/2} = v^{n-1/2} + ½(Δt_{n-1} + Δt_n) a^n,
-//   x^{n+1} = x^n + Δt_n v^{n+1/2},   Δt_n = α h / max_a c(F_a),
+//   reference   move the reference configuration to x^n when the formulation says so
+//   forces      T^n, F^n, P^n (and Π^n when wanted) at x^n
+//   accelerate  a^n = T^n/m + g; fixed particles none
+//   time step   Δt_n (the time integrator: α h / max c when due, collapse check)
+//   observe     v^n, the energy audit, the function objects, the progress line
+//   output      VTK when due (the last good level is remembered for a failure)
+//   drift       x^{n+1}, v^{n+1/2} (the time integrator); gravity work
+//   contact     Δv on v^{n+1/2} at x^{n+1} (spec §9, §12)
+//   order       1D: particles must not pass each other
 //
-// with v^{1/2} = v^0 + ½Δt_0 a^0 at the start. Function objects see each time level n with the
-// synchronised velocity v^n = v^{n-1/2} + ½Δt_{n-1} a^n. Fixed particles keep x and v = 0;
-// their force is discarded (they stay in every kernel sum).
-//
+// Fixed particles keep x and v = 0; their force is discarded (they stay in every kernel sum).
 // A numerical failure (det F <= 0, NaN, particles crossing in 1D, Δt collapse) writes the last
-// good state and throws NumericalFailure naming step, time, particle and quantity.
+// good level and throws NumericalFailure naming step, time, particle and quantity.
 
 #include "contact/Contact.hpp"
 #include "core/CaseDictionaries.hpp"
+#include "core/WriteSchedule.hpp"
 #include "formulations/ReferenceManager.hpp"
 #include "functionObjects/FunctionObject.hpp"
 #include "io/PvdSeries.hpp"
 #include "solver/CaseSettings.hpp"
+#include "solver/EnergyAudit.hpp"
 #include "solver/ParticleFile.hpp"
 #include "solver/RunLog.hpp"
 #include "solver/StateFile.hpp"
+#include "timeIntegration/TimeIntegration.hpp"
 
 #include <memory>
 #include <string>
@@ -44,17 +51,39 @@ public:
     const ParticleSet<D>& particles() const { return particles_; }
 
 private:
+    // A time level as the writer sees it: read-only, the current one or the last good one.
+    struct LevelView
+    {
+        long step = 0;
+        double time = 0.0;
+        bool restartable = true;
+        const std::vector<Vec<D>>* x = nullptr; // positions of that level
+    };
+
     // SimulationSetup.cpp
     void loadParticles(const InitialParticles& initial);
     void setupBodies(const Dictionary& bodies);
     void setupFunctionObjects();
     void checkCrossingOrder();
 
-    // Simulation.cpp
-    void advance(RunLog& log, bool restarted); // the time loop
-    // α h / max c over the particles, and the particle with the largest wave speed.
-    std::pair<double, std::size_t> stableTimeStep() const;
-    void fail(const ForceStatus& status, const std::string& when);
+    using FunctionState = std::map<std::string, double>; // "fo:<name>:<key>" -> value
+
+    // Simulation.cpp: the time loop and its phases
+    void advance(RunLog& log, bool restarted);
+    bool moveReference(long firstStep);
+    bool energyWanted(long firstStep) const;
+    ForceStatus computeForces(bool atReference, bool wantEnergy);
+    void accelerate();
+    void chooseTimeStep(bool freshStart);
+    FunctionState functionObjectState() const;
+    void observe(RunLog& log, double dt, double strainEnergy, bool wantEnergy, bool progress,
+                 long firstStep);
+    void writeLevel(RunLog& log, const FunctionState& functionState);
+    void drift(double dt);
+    void applyContact(double dt);
+    void checkOrder(double dt);
+    WaveSpeedBound waveSpeedBound() const;
+    [[noreturn]] void fail(const ForceStatus& status, const std::string& when);
     long crossingParticle() const;
     std::string particleName(std::size_t a) const;
 
@@ -65,8 +94,7 @@ private:
     // postProcessing/summary.json: models, status, cost and the function objects' results.
     void writeSummary(const RunSummary& summary, const std::string& failure) const;
     void removeOldOutput();
-    void writeOutput(bool restartable, long step, double time,
-                     const std::map<std::string, double>& functionState);
+    void writeOutput(const LevelView& level, const FunctionState& functionState);
     bool restoreLatest(RunLog& log);
 
     const CaseDictionaries& dicts_;
@@ -87,28 +115,18 @@ private:
     std::unique_ptr<Formulation<D>> formulation_;
     std::unique_ptr<Stabilisation<D>> scheme_;
     std::unique_ptr<Contact<D>> contact_;
+    std::unique_ptr<TimeIntegration<D>> integrator_;
     std::vector<std::unique_ptr<FunctionObject<D>>> functionObjects_;
     std::unique_ptr<ReferenceManager<D>> reference_;
     std::vector<std::vector<std::size_t>> barOrder_; // 1D: each body's particles sorted by X
 
-    // Time state (all of it goes into every output, so a restart continues exactly).
+    EnergyAudit<D> audit_;
+    WriteSchedule outputSchedule_;
     long step_ = 0;
     double time_ = 0.0;
-    double deltaT_ = 0.0;         // Δt of the most recent step (Δt_{n-1} at level n)
-    double previousDeltaT_ = 0.0; // Δt_{n-1}, used for v^n and v^{n+1/2}
-    bool halfStepVelocity_ = false; // particles_.v holds v^{n-1/2} (false: v^0 at the start)
     long outputIndex_ = 0;
-    double nextOutputTime_ = 0.0;
-    double externalWork_ = 0.0;
-    double contactWork_ = 0.0;
-    // The contact kick's work needs a^{n+1}: its last part is added at the next level.
-    bool contactWorkPending_ = false;
-    double contactDeltaT_ = 0.0;
-    double firstDeltaT_ = 0.0; // Δt_0: a step below 1e-6 of it is a collapse
-    double initialEnergy_ = 0.0;
-    bool haveInitialEnergy_ = false;
-    long lastGoodStep_ = -1;
-    double lastGoodTime_ = 0.0;
+    LevelView lastGood_{-1, 0.0, false, nullptr}; // the last level that passed every check
+    const std::vector<Vec<D>>* writtenX_ = nullptr; // the positions being written
 
     // Work arrays, allocated once.
     std::vector<Vec<D>> acceleration_;   // the internal force T, then a = T/m + g in place

@@ -100,17 +100,46 @@ void Simulation<D>::removeOldOutput()
     pvd_ = PvdSeries(pvd_.file());
 }
 
+namespace
+{
+
+// x as written: the positions of the level being written (the current one, or the last good
+// one after a failure); a restart reads them back into the particles' own x.
+template <int D>
+class WrittenPositions final : public FieldArray
+{
+public:
+    WrittenPositions(const std::vector<Vec<D>>* const& written, std::vector<Vec<D>>& x)
+        : written_(written), x_(x)
+    {
+    }
+    std::size_t size() const override { return x_.size(); }
+    void get(std::size_t a, double* out) const override { fieldValues::get((*written_)[a], out); }
+    void set(std::size_t a, const double* in) override { fieldValues::set(in, x_[a]); }
+    void resize(std::size_t n) override { x_.resize(n, Vec<D>::Zero()); }
+    bool stored() const override { return true; }
+
+private:
+    const std::vector<Vec<D>>* const& written_;
+    std::vector<Vec<D>>& x_;
+};
+
+} // namespace
+
 template <int D>
 void Simulation<D>::declareFields()
 {
     ParticleSet<D>& p = particles_;
     ParticleFields<D>& f = fields_;
-    f.bind(FieldSpec::vector(positionField, "current position x^n [m] (the VTK points)")
-               .restart()
-               .display(),
-           p.x);
+    writtenX_ = &p.x;
+    f.bindArray(FieldSpec::vector(positionField, "current position x^n [m] (the VTK points)")
+                    .restart()
+                    .display(),
+                std::make_unique<WrittenPositions<D>>(writtenX_, p.x));
     f.template derive<Vec<D>>(FieldSpec::vector("displacement", "x^n - X [m]").display().active(),
-                     [&p](std::size_t a) { return Vec<D>(p.x[a] - p.X[a]); });
+                              [this](std::size_t a) {
+                                  return Vec<D>((*writtenX_)[a] - particles_.X[a]);
+                              });
     f.bind(FieldSpec::vector("velocity", "velocity v^n at the time level [m/s]").display(),
            velocitySync_);
     f.bind(FieldSpec::tensor("deformationGradient", "F at x^n (2D, 1D: F_zz = 1 shown)")
@@ -121,15 +150,17 @@ void Simulation<D>::declareFields()
                              "P(F) [Pa] (2D, 1D: the components the model computes, others 0)")
                .display(),
            p.P);
-    f.template derive<Mat<D>>(FieldSpec::tensor("cauchyStress", "sigma = P F^T / det F [Pa] (2D, 1D: "
-                                                       "the components the model computes)")
-                         .display()
-                         .active(),
-                     [&p](std::size_t a) {
-                         return Mat<D>(p.P[a] * p.F[a].transpose() / p.F[a].determinant());
-                     });
-    f.template derive<double>(FieldSpec::scalar("volumeRatio", "J = det F, the volume change").display().active(),
-                     [&p](std::size_t a) { return p.F[a].determinant(); });
+    f.template derive<Mat<D>>(FieldSpec::tensor("cauchyStress", "sigma = P F^T / det F [Pa] (2D, "
+                                                                "1D: the components the model "
+                                                                "computes)")
+                                  .display()
+                                  .active(),
+                              [&p](std::size_t a) {
+                                  return Mat<D>(p.P[a] * p.F[a].transpose() / p.F[a].determinant());
+                              });
+    f.template derive<double>(
+        FieldSpec::scalar("volumeRatio", "J = det F, the volume change").display().active(),
+        [&p](std::size_t a) { return p.F[a].determinant(); });
     f.bind(FieldSpec::integer("bodyId", "the particle's body: index into the field data "
                                         "'bodyNames'")
                .display(),
@@ -139,10 +170,6 @@ void Simulation<D>::declareFields()
     f.bind(FieldSpec::vector("initialPosition", "X, the position at t = 0 [m]").restart(), p.X);
     f.bind(FieldSpec::scalar("initialVolume", "V0 [m^D]").restart(), p.V0);
     f.bind(FieldSpec::scalar("mass", "m = rho0 V0 [kg]").restart(), p.m);
-    f.bind(FieldSpec::vector("velocityHalfStep", "v^{n-1/2} of the leapfrog (v^0 before the "
-                                                 "first step) [m/s]")
-               .restart(),
-           p.v);
     f.bind(FieldSpec::vector("acceleration", "a^n = T/m + g [m/s^2]"), acceleration_);
     f.bind(FieldSpec::vector("previousPosition", "x of the last good level [m]"), previousX_);
     f.bind(FieldSpec::tensor("nextDeformationGradient", "F of the force evaluation under way"),
@@ -153,31 +180,24 @@ void Simulation<D>::declareFields()
         f.bind(FieldSpec::vector("contactVelocityChange", "the last contact kick [m/s]"),
                contactDeltaV_);
     }
+    integrator_->attach(p.v, fields_, runScalars_);
     reference_->declareFields(fields_, runScalars_);
-
-    RunScalars& s = runScalars_;
-    s.bind("deltaT", deltaT_);
-    s.bind("previousDeltaT", previousDeltaT_);
-    s.bind("firstDeltaT", firstDeltaT_);
-    s.bind("halfStepVelocity", halfStepVelocity_);
-    s.bind("outputIndex", outputIndex_);
-    s.bind("nextOutputTime", nextOutputTime_);
-    s.bind("externalWork", externalWork_);
-    s.bind("contactWork", contactWork_);
-    s.bind("initialEnergy", initialEnergy_);
-    s.bind("haveInitialEnergy", haveInitialEnergy_);
+    audit_.declareState(runScalars_);
+    runScalars_.bind("outputIndex", outputIndex_);
+    runScalars_.bind("nextOutputTime", outputSchedule_.next());
 }
 
 template <int D>
-void Simulation<D>::writeOutput(bool restartable, long step, double time,
-                                const std::map<std::string, double>& functionState)
+void Simulation<D>::writeOutput(const LevelView& level, const FunctionState& functionState)
 {
     VtuData data;
-    writeState<D>(fields_, runScalars_, time, data);
+    writtenX_ = level.x;
+    writeState<D>(fields_, runScalars_, level.time, data);
+    writtenX_ = &particles_.x;
     // What identifies the output itself (the level it holds, whether a restart may use it).
     const auto number = [](double value) { return VtuArray{1, {value}, false, {}, {}}; };
-    data.fieldData[std::string(restartPrefix) + "step"] = number(static_cast<double>(step));
-    data.fieldData[std::string(restartPrefix) + "restartable"] = number(restartable ? 1.0 : 0.0);
+    data.fieldData[std::string(restartPrefix) + "step"] = number(static_cast<double>(level.step));
+    data.fieldData[std::string(restartPrefix) + "restartable"] = number(level.restartable ? 1.0 : 0.0);
     data.fieldData[std::string(restartPrefix) + "dimension"] = number(D);
     for (const auto& [key, value] : functionState)
     {
@@ -187,7 +207,7 @@ void Simulation<D>::writeOutput(bool restartable, long step, double time,
 
     const std::string name = caseName_ + "_" + std::to_string(outputIndex_) + ".vtu";
     writeVtu(dicts_.caseDir() / "VTK" / name, data);
-    pvd_.add(time, name);
+    pvd_.add(level.time, name);
     ++outputIndex_;
 }
 

@@ -57,7 +57,7 @@ template <int D>
 Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& control,
                           const SchemeSettings& schemes, const InitialParticles& initial)
     : dicts_(dicts), control_(control), caseName_(dicts.caseName()),
-      pvd_(dicts.caseDir() / "VTK" / (dicts.caseName() + ".pvd"))
+      outputSchedule_(control.writeInterval), pvd_(dicts.caseDir() / "VTK" / (dicts.caseName() + ".pvd"))
 {
     if (initial.dimension != D)
     {
@@ -82,6 +82,11 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
         const Dictionary none("contact", dicts.get("sphSchemes").location());
         contact_ = createModel<Contact<D>>("none", none, contactArgs, D);
     }
+
+    const Dictionary leapfrog("timeIntegration", dicts.get("sphSchemes").location());
+    integrator_ = selectModel<TimeIntegration<D>>(
+        schemes.timeIntegration ? *schemes.timeIntegration : leapfrog,
+        {control.courant, control.timeStepUpdateInterval}, D, {"leapfrog", {}});
 
     setupBodies(dicts.get("bodies"));
     checkCrossingOrder();

@@ -5,6 +5,7 @@
 //   fields        | any of: displacement velocity F P J body       | (P)
 //   writeInterval | time between snapshots [s] (0: every step)     | required here
 // Columns: x y (z), then the fields' components as in `probes` (P_xx P_xy ...).
+#include "core/WriteSchedule.hpp"
 #include "functionObjects/FunctionObjectModel.hpp"
 #include "io/AtomicFile.hpp"
 
@@ -31,7 +32,7 @@ public:
     }
 
     Snapshot(const Params& params, const typename FunctionObject<D>::Args& args)
-        : FunctionObject<D>(args.name), interval_(params.real("writeInterval")),
+        : FunctionObject<D>(args.name), schedule_(params.real("writeInterval")),
           fields_(params.wordList("fields")), folder_(args.caseDir / "postProcessing" / args.name)
     {
         static const std::vector<std::string> known{"displacement", "velocity", "F", "P", "J",
@@ -50,21 +51,18 @@ public:
     {
         if (!restarted)
         {
-            next_ = 0.0;
+            schedule_.restart();
         }
         (void)startTime;
     }
 
     void execute(const StepState<D>& state) override
     {
-        if (state.time < next_ - 1e-6 * state.deltaT)
+        if (!schedule_.due(state.time, state.deltaT))
         {
             return;
         }
-        while (next_ <= state.time + 1e-6 * state.deltaT)
-        {
-            next_ += interval_;
-        }
+        schedule_.written(state.time, state.deltaT);
         static const char* axes[3] = {"x", "y", "z"};
         std::ostringstream out;
         out << "#";
@@ -152,14 +150,19 @@ public:
         return {this->name() + ": " + std::to_string(written_) + " snapshots in " + folder_.string()};
     }
     std::string summary() const override { return "snapshot"; }
-    void saveState(std::map<std::string, double>& state) const override { state["next"] = next_; }
-    void restoreState(const std::map<std::string, double>& state) override { next_ = state.at("next"); }
+    void saveState(std::map<std::string, double>& state) const override
+    {
+        state["next"] = schedule_.next();
+    }
+    void restoreState(const std::map<std::string, double>& state) override
+    {
+        schedule_.next() = state.at("next");
+    }
 
 private:
-    double interval_;
+    WriteSchedule schedule_;
     std::vector<std::string> fields_;
     std::filesystem::path folder_;
-    double next_ = 0.0;
     long written_ = 0;
 };
 

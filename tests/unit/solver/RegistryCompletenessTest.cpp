@@ -46,6 +46,7 @@ const std::map<std::string, std::map<int, Names>>& expected()
           {3, {"totalLagrangian", "updatedLagrangian"}}}},
         {"stabilisation", {{1, everyScheme}, {2, everyScheme}, {3, everyScheme}}},
         {"contact", {{1, {"none", "repulsion"}}, {2, {"none", "repulsion"}}, {3, {"none", "repulsion"}}}},
+        {"timeIntegration", {{1, {"leapfrog"}}, {2, {"leapfrog"}}, {3, {"leapfrog"}}}},
         {"functionObject",
          {{1, {"energy", "exactSolution", "extent", "oscillation", "probes", "snapshot", "stabilityMonitor"}},
           {2, {"energy", "extent", "oscillation", "probes", "snapshot", "stabilityMonitor"}},

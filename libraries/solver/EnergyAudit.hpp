@@ -1,0 +1,107 @@
+#pragma once
+// The energy audit of a run (spec §10, §12): the work of external (body) forces and of the
+// contact kicks accumulated over the steps, and the balance at a level,
+//
+//   total = Σ ½ m |v^n|^2 + Π^n - W_external - W_contact,   drift = (total - total_0)/|total_0|.
+//
+// One owner: the run log's drift and the `energy` function object's table both read it.
+// Sums are serial, in particle order, so they do not depend on the number of threads.
+
+#include "core/RunScalars.hpp"
+#include "functionObjects/FunctionObject.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace sph
+{
+
+template <int D>
+class EnergyAudit
+{
+public:
+    void declareState(RunScalars& scalars)
+    {
+        scalars.bind("externalWork", external_);
+        scalars.bind("contactWork", contact_);
+        scalars.bind("initialEnergy", initial_);
+        scalars.bind("haveInitialEnergy", haveInitial_);
+    }
+
+    // Work of a constant body force g over the drift x^n -> x^{n+1}: Σ m g·(x^{n+1} - x^n).
+    void addGravityWork(const std::vector<double>& m, const Vec<D>& g,
+                        const std::vector<Vec<D>>& xNew, const std::vector<Vec<D>>& xOld)
+    {
+        double work = 0.0;
+        for (std::size_t a = 0; a < m.size(); ++a)
+        {
+            work += m[a] * g.dot(xNew[a] - xOld[a]);
+        }
+        external_ += work;
+    }
+
+    // A contact kick Δv applied to v^{n+1/2} over a step dt: its work is
+    // ΔW = Σ m Δv·(v^{n+1/2} + ½Δv + ½Δt a^{n+1}) (spec §12); the part known now is added now
+    // (v_after = v_before + Δv), the part with a^{n+1} by completeContactWork().
+    void addContactKick(const std::vector<double>& m, const std::vector<Vec<D>>& deltaV,
+                        const std::vector<Vec<D>>& vAfter, double dt)
+    {
+        double work = 0.0;
+        for (std::size_t a = 0; a < m.size(); ++a)
+        {
+            work += m[a] * deltaV[a].dot(vAfter[a] - 0.5 * deltaV[a]);
+        }
+        contact_ += work;
+        pendingKick_ = true;
+        kickDeltaT_ = dt;
+    }
+    void completeContactWork(const std::vector<double>& m, const std::vector<Vec<D>>& deltaV,
+                             const std::vector<Vec<D>>& acceleration)
+    {
+        if (!pendingKick_)
+        {
+            return;
+        }
+        double work = 0.0;
+        for (std::size_t a = 0; a < m.size(); ++a)
+        {
+            work += m[a] * deltaV[a].dot(acceleration[a]);
+        }
+        contact_ += 0.5 * kickDeltaT_ * work;
+        pendingKick_ = false;
+    }
+
+    // The balance at a level with velocities v^n and strain energy Π^n; the first balance of
+    // a run is the reference of the drift.
+    EnergyBalance balance(const std::vector<double>& m, const std::vector<Vec<D>>& velocity,
+                          double strainEnergy)
+    {
+        EnergyBalance e;
+        for (std::size_t a = 0; a < m.size(); ++a)
+        {
+            e.kinetic += 0.5 * m[a] * velocity[a].squaredNorm();
+        }
+        e.strain = strainEnergy;
+        e.external = external_;
+        e.contact = contact_;
+        e.total = e.kinetic + e.strain - e.external - e.contact;
+        if (!haveInitial_)
+        {
+            initial_ = e.total;
+            haveInitial_ = true;
+        }
+        const double scale = std::abs(initial_) > 0.0 ? std::abs(initial_) : 1.0;
+        e.drift = (e.total - initial_) / scale;
+        return e;
+    }
+
+private:
+    double external_ = 0.0;
+    double contact_ = 0.0;
+    double initial_ = 0.0;
+    bool haveInitial_ = false;
+    bool pendingKick_ = false; // a kick whose a^{n+1} part is still to be added
+    double kickDeltaT_ = 0.0;
+};
+
+} // namespace sph

@@ -1,0 +1,117 @@
+// What bounds and what stops a run: the wave-speed bound of the time step, the 1D order check
+// and the diagnosis of a numerical failure (with the last good level written).
+#include "solver/Simulation.hpp"
+
+#include "core/Application.hpp"
+#include "particles/Parallel.hpp"
+
+#include <sstream>
+
+namespace sph
+{
+
+template <int D>
+WaveSpeedBound Simulation<D>::waveSpeedBound() const
+{
+    // Per body, in chunks, in parallel: a maximum does not depend on the order.
+    const auto bodyMaximum = [this](std::size_t b) {
+        const BodyRange& range = particles_.bodies[b];
+        const std::size_t chunk = 1024;
+        const long chunks = static_cast<long>((range.size() + chunk - 1) / chunk);
+        double c = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : c) if (useThreads(range.size()))
+        for (long i = 0; i < chunks; ++i)
+        {
+            const std::size_t first = range.begin + static_cast<std::size_t>(i) * chunk;
+            const std::size_t count = std::min(chunk, range.end - first);
+            c = std::max(c, materials_[b]->maxWaveSpeed(&particles_.F[first], count));
+        }
+        return c;
+    };
+    const auto fastestBody = [this, bodyMaximum] {
+        double c = 0.0;
+        std::size_t body = 0;
+        for (std::size_t b = 0; b < particles_.bodies.size(); ++b)
+        {
+            if (const double bodyC = bodyMaximum(b); bodyC > c)
+            {
+                c = bodyC;
+                body = b;
+            }
+        }
+        return std::pair<double, std::size_t>{c, body};
+    };
+    // Only a collapse needs the fastest particle itself.
+    const auto fastestParticle = [this, fastestBody] {
+        const std::size_t body = fastestBody().second;
+        const BodyRange& range = particles_.bodies[body];
+        std::size_t fastest = range.begin;
+        double best = -1.0;
+        for (std::size_t a = range.begin; a < range.end; ++a)
+        {
+            const double ca = materials_[body]->waveSpeed(particles_.F[a]);
+            if (!(ca <= best))
+            {
+                best = ca;
+                fastest = a;
+            }
+        }
+        return fastest;
+    };
+    return {kernel_->h(), [fastestBody] { return fastestBody().first; }, fastestParticle};
+}
+
+template <int D>
+long Simulation<D>::crossingParticle() const
+{
+    if constexpr (D == 1)
+    {
+        for (const auto& order : barOrder_)
+        {
+            for (std::size_t i = 1; i < order.size(); ++i)
+            {
+                if (!(particles_.x[order[i]][0] > particles_.x[order[i - 1]][0]))
+                {
+                    return static_cast<long>(order[i]);
+                }
+            }
+        }
+    }
+    return -1;
+}
+
+template <int D>
+void Simulation<D>::fail(const ForceStatus& status, const std::string& when)
+{
+    std::ostringstream message;
+    message << status.message;
+    if (status.failure == FailureKind::nonPositiveJacobian)
+    {
+        message << " = " << status.badValue << " <= 0";
+    }
+    else if (status.failure == FailureKind::nonFiniteForce)
+    {
+        message << " is not finite";
+    }
+    message << " at " << particleName(static_cast<std::size_t>(status.badParticle)) << ", step "
+            << step_ << ", t = " << time_ << " s, " << when << ".";
+    std::string written;
+    if (lastGood_.step >= 0)
+    {
+        writeOutput(lastGood_, {});
+        written = "The last good state (step " + std::to_string(lastGood_.step) + ", t = " +
+                  std::to_string(lastGood_.time) + " s) is written to " +
+                  pvd_.entries().back().file + " (listed in VTK/" + caseName_ + ".pvd).";
+    }
+    message << "\n" << written
+            << "\nLikely causes: the scheme is unstable for this problem (try stabilisation gradF "
+               "or formulation totalLagrangian), the time step is too large (lower courant), or "
+               "the deformation is beyond the material model.";
+    throw NumericalFailure(message.str());
+}
+
+template class Simulation<1>;
+template class Simulation<2>;
+template class Simulation<3>;
+
+} // namespace sph
