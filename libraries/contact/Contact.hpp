@@ -11,6 +11,7 @@
 #include "kernels/Kernel.hpp"
 #include "particles/ParticleSet.hpp"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,11 @@ struct ContactState
 {
     const std::vector<Vec<D>>& x;   // x^{n+1}
     std::vector<Vec<D>>& v;         // v^{n+1/2}, changed in place
-    const ParticleSet<D>& particles; // masses, volumes, bodies, fixed flags, F (for J)
+    const ParticleSet<D>& particles; // masses, initial volumes, bodies, fixed flags
     double deltaT;
+    // J_a = det F_a at x^{n+1} (the current volume is V0 J, spec §9), evaluated by the scheme
+    // on demand: contact needs it only for the few particles near another body.
+    std::function<double(std::size_t)> jacobian;
 };
 
 template <int D>

@@ -214,7 +214,8 @@ void Simulation<D>::drift(double dt)
     }
 }
 
-// Contact acts on v^{n+1/2} at x^{n+1} (spec §9, §12).
+// Contact acts on v^{n+1/2} at x^{n+1} with the volumes there (spec §9, §12): F at x^{n+1}
+// from the scheme, for the particles the contact model asks about.
 template <int D>
 void Simulation<D>::applyContact(double dt)
 {
@@ -222,7 +223,11 @@ void Simulation<D>::applyContact(double dt)
     {
         return;
     }
-    ContactState<D> state{particles_.x, particles_.v, particles_, dt};
+    ContactState<D> state{particles_.x, particles_.v, particles_, dt, [this](std::size_t a) {
+                              return scheme_->deformationGradient(a, particles_.x,
+                                                                  reference_->reference())
+                                  .determinant();
+                          }};
     contact_->apply(state, contactDeltaV_);
     audit_.addContactKick(particles_.m, contactDeltaV_, particles_.v, dt);
 }

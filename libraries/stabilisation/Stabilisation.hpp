@@ -116,6 +116,11 @@ public:
                                         std::vector<Mat<D>>& F,
                                         std::vector<Tensor3<D>>* newK) const = 0;
 
+    // F_a = f_a F^r_a of one particle at positions x, as the force evaluation at x computes it
+    // (to round-off; contact needs the current volumes V0 det F of the few particles near another body).
+    virtual Mat<D> deformationGradient(std::size_t a, const std::vector<Vec<D>>& x,
+                                       const ReferenceConfiguration<D>& ref) const = 0;
+
     // Internal forces, F and P at the current positions; the energy Π when wantEnergy.
     virtual ForceStatus computeForces(const ForceInput<D>& in, ForceOutput<D>& out,
                                       bool wantEnergy) = 0;

@@ -188,8 +188,14 @@ public:
             sourceX[i] = state.x[sources[i]];
         }
         const NeighbourList list = buildCrossNeighbourList<D>(queryX, sourceX, reach);
-        // 4. R_a = κ Σ_b V_b W_ab / Σ_á V_á W_aá with V = V0 J.
-        const auto volume = [&](std::size_t a) { return p.V0[a] * p.F[a].determinant(); };
+        // 4. R_a = κ Σ_b V_b W_ab / Σ_á V_á W_aá with V = V0 J at x^{n+1}, once per particle.
+        std::vector<double> currentVolume(p.size(), 0.0);
+#pragma omp parallel for schedule(static) if (useThreads(sources.size()))
+        for (std::size_t i = 0; i < sources.size(); ++i)
+        {
+            currentVolume[sources[i]] = p.V0[sources[i]] * state.jacobian(sources[i]);
+        }
+        const auto volume = [&](std::size_t a) { return currentVolume[a]; };
         const std::size_t nq = queries.size();
         std::vector<double> R(p.size(), 0.0);
 #pragma omp parallel for schedule(static) if (useThreads(nq))

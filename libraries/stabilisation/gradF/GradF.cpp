@@ -201,6 +201,25 @@ typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vec
     return kin;
 }
 
+// The f_a part of kinematics() alone (the same sums in the same order).
+template <int D>
+Mat<D> GradF<D>::deformationGradient(std::size_t a, const std::vector<Vec<D>>& x,
+                                     const ReferenceConfiguration<D>& ref) const
+{
+    const NeighbourList& list = ref.neighbours;
+    Mat<D> moment = Mat<D>::Zero();
+    const Vec<D> xa = x[a];
+    for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
+    {
+        const std::size_t b = list.indices[k];
+        const Vec<D> xr = ref.x[b] - ref.x[a];
+        const Vec<D> xba = x[b] - xa;
+        moment.noalias() -= (ref.V[b] * ref.dWdrOverR[k] * xba) * xr.transpose();
+    }
+    const Mat<D> f = moment * ref.gradient.L[a].transpose();
+    return f * ref.F[a];
+}
+
 template <int D>
 ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
                                       const ReferenceConfiguration<D>& ref, std::vector<Mat<D>>& F,

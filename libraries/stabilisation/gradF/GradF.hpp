@@ -39,6 +39,8 @@ public:
     ForceStatus referenceUpdate(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
                                 std::vector<Mat<D>>& F,
                                 std::vector<Tensor3<D>>* newK) const override;
+    Mat<D> deformationGradient(std::size_t a, const std::vector<Vec<D>>& x,
+                               const ReferenceConfiguration<D>& ref) const override;
     ForceStatus computeForces(const ForceInput<D>& in, ForceOutput<D>& out,
                               bool wantEnergy) override;
     double energy(const ForceInput<D>& in) override;

@@ -23,6 +23,11 @@ public:
     {
         return core_.deformationGradients(x, ref, StandardGradients<D>{ref}, F);
     }
+    Mat<D> deformationGradient(std::size_t a, const std::vector<Vec<D>>& x,
+                               const ReferenceConfiguration<D>& ref) const override
+    {
+        return incrementalGradient<D>(a, x, ref, StandardGradients<D>{ref}) * ref.F[a];
+    }
     ForceStatus computeForces(const ForceInput<D>& in, ForceOutput<D>& out,
                               bool wantEnergy) override
     {

@@ -54,6 +54,11 @@ public:
     {
         return core_.deformationGradients(x, ref, gradients(), F);
     }
+    Mat<D> deformationGradient(std::size_t a, const std::vector<Vec<D>>& x,
+                               const ReferenceConfiguration<D>& ref) const override
+    {
+        return incrementalGradient<D>(a, x, ref, gradients()) * ref.F[a];
+    }
     ForceStatus computeForces(const ForceInput<D>& in, ForceOutput<D>& out,
                               bool wantEnergy) override
     {

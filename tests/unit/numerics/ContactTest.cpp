@@ -48,7 +48,7 @@ TEST_CASE("repulsion is equal and opposite, repulsive, and spares fixed particle
     ParticleSet<2> p = twoBlocks(0.5); // gaps of 1.5 spacings: within the support 3
     p.v.assign(p.size(), Vec<2>::Zero());
     std::vector<Vec<2>> deltaV;
-    ContactState<2> state{p.x, p.v, p, 1e-3};
+    ContactState<2> state{p.x, p.v, p, 1e-3, [&](std::size_t a) { return p.F[a].determinant(); }};
     contact->apply(state, deltaV);
     CHECK(contact->pairsSearched() == 1);
     Vec<2> momentum = Vec<2>::Zero();
@@ -82,7 +82,7 @@ TEST_CASE("repulsion is equal and opposite, repulsive, and spares fixed particle
     // Fixed particles are not kicked.
     ParticleSet<2> q = twoBlocks(0.5);
     q.fixed.assign(q.size(), 1);
-    ContactState<2> fixedState{q.x, q.v, q, 1e-3};
+    ContactState<2> fixedState{q.x, q.v, q, 1e-3, [&](std::size_t a) { return q.F[a].determinant(); }};
     contact->apply(fixedState, deltaV);
     for (const auto& dv : deltaV)
     {
@@ -96,7 +96,7 @@ TEST_CASE("repulsion costs nothing for separated bodies and a single body", "[co
     auto contact = repulsion(*kernel);
     ParticleSet<2> p = twoBlocks(10.0);
     std::vector<Vec<2>> deltaV;
-    ContactState<2> state{p.x, p.v, p, 1e-3};
+    ContactState<2> state{p.x, p.v, p, 1e-3, [&](std::size_t a) { return p.F[a].determinant(); }};
     contact->apply(state, deltaV);
     CHECK(contact->pairsSearched() == 0);
     for (const auto& dv : deltaV)
@@ -108,7 +108,8 @@ TEST_CASE("repulsion costs nothing for separated bodies and a single body", "[co
                                          {kernel.get(), std::vector<std::string>{"A", "B", "C"}}, 2);
     ParticleSet<2> near = twoBlocks(1.0);
     near.bodies.push_back(BodyRange{"C", near.size(), near.size()});
-    ContactState<2> nearState{near.x, near.v, near, 1e-3};
+    ContactState<2> nearState{near.x, near.v, near, 1e-3,
+                              [&](std::size_t a) { return near.F[a].determinant(); }};
     three->apply(nearState, deltaV);
     CHECK(three->pairsSearched() == 0);
 }

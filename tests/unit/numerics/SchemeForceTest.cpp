@@ -245,6 +245,27 @@ void checkRigidMotion(const std::string& name, bool updated)
     }
 }
 
+// The per-particle F (what contact uses for the volumes at x^{n+1}) is the force evaluation's
+// F at the same positions (the same sums; the compiler may fuse them differently, so to
+// round-off).
+template <int D>
+void checkParticleDeformationGradient(const std::string& name, bool updated)
+{
+    INFO(name << (updated ? " UL" : " TL") << " " << D << "D, per-particle F");
+    test::SchemeFixture<D> fixture(cloud<D>(), schemeText<D>(name), kMaterial, updated, hOverDx<D>());
+    const auto x = test::deformCurrent<D>(fixture.ref.x, 7);
+    std::vector<Vec<D>> T;
+    std::vector<Mat<D>> F;
+    std::vector<Mat<D>> P;
+    ForceOutput<D> out{T, F, P};
+    REQUIRE(fixture.scheme->computeForces(fixture.input(x), out, false).ok());
+    for (std::size_t a = 0; a < x.size(); ++a)
+    {
+        const Mat<D> single = fixture.scheme->deformationGradient(a, x, fixture.ref);
+        CHECK((single - F[a]).norm() <= 1e-14 * F[a].norm());
+    }
+}
+
 template <int D>
 void checkAllSchemes()
 {
@@ -257,6 +278,7 @@ void checkAllSchemes()
         {
             checkForces<D>(name, updated);
             checkRigidMotion<D>(name, updated);
+            checkParticleDeformationGradient<D>(name, updated);
         }
     }
 }
