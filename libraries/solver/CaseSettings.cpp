@@ -30,15 +30,14 @@ ControlSettings ControlSettings::read(const CaseDictionaries& dicts)
 {
     const Dictionary& dict = dicts.get("controlDict");
     const Params p = schema().validate(dict, "controlDict", 0, TypeEntry::isKey);
-    // Libraries first: function objects and models may come from them.
+    ControlSettings settings;
     if (const Entry* libs = dict.find("libs"))
     {
         for (const Item& item : libs->items().front().items())
         {
-            LibraryLoader::load(item.text(), item.location(), dicts.caseDir());
+            settings.libraries.emplace_back(item.text(), item.location());
         }
     }
-    ControlSettings settings;
     settings.endTime = p.real("endTime");
     settings.courant = p.real("courant");
     settings.writeInterval = p.real("writeInterval");
@@ -66,6 +65,14 @@ Schema SchemeSettings::schema()
         .add(Key::dict("contact", "contact between bodies { type none | repulsion; }").optional())
         .add(Key::dict("timeIntegration", "time integrator { type leapfrog; } (default leapfrog)")
                  .optional());
+}
+
+void loadCaseLibraries(const ControlSettings& control, const std::filesystem::path& caseDir)
+{
+    for (const auto& [name, where] : control.libraries)
+    {
+        LibraryLoader::load(name, where, caseDir);
+    }
 }
 
 SchemeSettings SchemeSettings::read(const Dictionary& sphSchemes)

@@ -23,8 +23,10 @@
 #include "core/CaseDictionaries.hpp"
 #include "core/Schema.hpp"
 
+#include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sph
@@ -39,11 +41,18 @@ struct ControlSettings
     long timeStepUpdateInterval = 1;
     std::optional<long> maxSteps;
     const Dictionary* functions = nullptr;
+    // The case's own model libraries (`libs`), with where each is named.
+    std::vector<std::pair<std::string, SourceLocation>> libraries;
 
     static Schema schema();
-    // Validates controlDict and loads the libraries it names (before any model is selected).
+    // Validates controlDict (nothing is loaded: see loadCaseLibraries).
     static ControlSettings read(const CaseDictionaries& dicts);
 };
+
+// The start-up step that loads the case's `libs`, after the default libraries and before any
+// model is selected (a case's models may be in them). A library runs its registration code as
+// it loads: a case is code.
+void loadCaseLibraries(const ControlSettings& control, const std::filesystem::path& caseDir);
 
 struct SchemeSettings
 {

@@ -1,7 +1,7 @@
 #include "solver/ParticleFile.hpp"
 
 #include "core/InputError.hpp"
-#include "generators/Generator.hpp"
+#include "initialConditions/generators/Generator.hpp"
 #include "io/VtuFile.hpp"
 
 #include <cmath>

@@ -5,8 +5,8 @@
 
 #include "core/InputError.hpp"
 #include "core/Suggest.hpp"
-#include "particles/fields/Fields.hpp"
-#include "particles/regions/Region.hpp"
+#include "initialConditions/fields/Fields.hpp"
+#include "initialConditions/regions/Region.hpp"
 
 #include <algorithm>
 #include <numeric>

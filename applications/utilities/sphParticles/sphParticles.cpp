@@ -1,7 +1,7 @@
 // sphParticles: builds the initial particles constant/particles.vtu from system/particlesDict.
 // See `sphParticles -help`.
 #include "core/Application.hpp"
-#include "solver/Applications.hpp"
+#include "sphParticles/ParticlesApplication.hpp"
 
 int main(int argc, char** argv)
 {

@@ -1,5 +1,5 @@
 // Particle generators (sphParticles): counts, volumes, spacing, symmetry, file round trip.
-#include "generators/Generator.hpp"
+#include "initialConditions/generators/Generator.hpp"
 #include "io/VtuFile.hpp"
 #include "solver/ParticleFile.hpp"
 #include "support/CaseRunner.hpp"

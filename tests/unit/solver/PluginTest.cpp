@@ -1,7 +1,7 @@
 // Plugins: a library named in a case's `libs` is loaded at run time and its models are
 // selectable by name; a missing library is a fatal error with dlerror and a checklist.
 #include "core/InputError.hpp"
-#include "solver/Applications.hpp"
+#include "core/ModelListing.hpp"
 #include "io/PvdSeries.hpp"
 #include "io/VtuFile.hpp"
 #include "solver/SolverCases.hpp"

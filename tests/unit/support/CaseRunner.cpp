@@ -1,6 +1,7 @@
 #include "support/CaseRunner.hpp"
 
-#include "solver/Applications.hpp"
+#include "sphParticles/ParticlesApplication.hpp"
+#include "sphSolid/SolidApplication.hpp"
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>

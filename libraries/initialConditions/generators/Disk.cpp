@@ -3,7 +3,7 @@
 //   centre  | centre [m]           | required
 //   radius  | radius [m]           | required
 //   spacing | particle spacing [m] | required
-#include "generators/Generator.hpp"
+#include "initialConditions/generators/Generator.hpp"
 
 namespace sph
 {

@@ -5,7 +5,7 @@
 //   max     | upper corner [m]     | required
 //   spacing | particle spacing [m] | required
 #include "core/Format.hpp"
-#include "generators/Generator.hpp"
+#include "initialConditions/generators/Generator.hpp"
 
 #include <cmath>
 

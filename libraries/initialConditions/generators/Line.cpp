@@ -5,7 +5,7 @@
 //   n          | number of particles, both ends included                  | required
 //   endVolumes | half: end particles get half a spacing, so the volumes tile [start, end]
 //              | exactly; full: every particle gets a whole spacing        | half
-#include "generators/Generator.hpp"
+#include "initialConditions/generators/Generator.hpp"
 
 namespace sph
 {

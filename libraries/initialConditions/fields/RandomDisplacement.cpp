@@ -1,6 +1,6 @@
 // `random` initial displacement field (x = X + u at t = 0; see Fields.hpp).
 //   amplitude, seed    u = amplitude · (uniform in [-1, 1])^D
-#include "particles/fields/Fields.hpp"
+#include "initialConditions/fields/Fields.hpp"
 
 #include <random>
 

@@ -3,7 +3,7 @@
 //   v_y = amplitude [M(cos kξ - cosh kξ) - N(sin kξ - sinh kξ)]/Q,
 //   ξ = X_x - clamp, k = kL/length, M = sin kL + sinh kL, N = cos kL + cosh kL,
 //   Q = 2 (cos kL sinh kL - sin kL cosh kL); 0 inside the clamp (ξ < 0).
-#include "particles/fields/Fields.hpp"
+#include "initialConditions/fields/Fields.hpp"
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 // `rotation` initial velocity field (2D and 3D; see Fields.hpp).
 //   omega [rad/s], centre, axis (3 components, (0 0 1) in 2D)    v = ω axis × (X - centre)
-#include "particles/fields/Fields.hpp"
+#include "initialConditions/fields/Fields.hpp"
 
 #include <Eigen/Geometry>
 

@@ -1,6 +1,6 @@
 // `uniform` initial velocity field (the default type; see Fields.hpp).
 //   velocity (vector)    v = velocity
-#include "particles/fields/Fields.hpp"
+#include "initialConditions/fields/Fields.hpp"
 
 namespace sph
 {

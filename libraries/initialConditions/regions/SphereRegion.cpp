@@ -1,5 +1,5 @@
 // `sphere` region: |X - centre| <= radius (an interval in 1D, a disk in 2D; see Region.hpp).
-#include "particles/regions/Region.hpp"
+#include "initialConditions/regions/Region.hpp"
 
 namespace sph
 {

@@ -2,7 +2,7 @@
 // zero-energy pattern.
 //   amplitude, spacing, direction, origin
 //   u = amplitude (-1)^(Σ_d round((X_d - o_d)/spacing)) · direction/|direction|
-#include "particles/fields/Fields.hpp"
+#include "initialConditions/fields/Fields.hpp"
 
 #include <cmath>
 

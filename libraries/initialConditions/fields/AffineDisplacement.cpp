@@ -1,6 +1,6 @@
 // `affine` initial displacement field (x = X + u at t = 0; see Fields.hpp).
 //   gradient (D rows), origin    u = (F0 - I)(X - origin): a held stretch
-#include "particles/fields/Fields.hpp"
+#include "initialConditions/fields/Fields.hpp"
 
 #include <string>
 

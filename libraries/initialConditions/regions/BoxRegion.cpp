@@ -1,5 +1,5 @@
 // `box` region: min <= X <= max componentwise (see Region.hpp).
-#include "particles/regions/Region.hpp"
+#include "initialConditions/regions/Region.hpp"
 
 namespace sph
 {

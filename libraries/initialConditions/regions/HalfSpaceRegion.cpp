@@ -1,5 +1,5 @@
 // `halfSpace` region: (X - point)·normal >= 0 (see Region.hpp).
-#include "particles/regions/Region.hpp"
+#include "initialConditions/regions/Region.hpp"
 
 namespace sph
 {

@@ -5,7 +5,7 @@
 //   file        | the .vtu file, relative to the case folder            | required
 //   spacing     | particle spacing [m] (sets h = hOverDx · spacing)      | required
 //   volumeArray | name of a point array holding the volumes              | optional
-#include "generators/Generator.hpp"
+#include "initialConditions/generators/Generator.hpp"
 #include "io/VtuFile.hpp"
 
 #include <cmath>

@@ -6,7 +6,7 @@
 //   innerRadius | inner radius [m]     | required
 //   outerRadius | outer radius [m]     | required
 //   spacing     | particle spacing [m] | required
-#include "generators/Generator.hpp"
+#include "initialConditions/generators/Generator.hpp"
 
 namespace sph
 {

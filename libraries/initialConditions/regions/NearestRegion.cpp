@@ -1,6 +1,6 @@
 // `nearest` region: the single particle whose X is closest to `point` (lowest index on ties;
 // see Region.hpp).
-#include "particles/regions/Region.hpp"
+#include "initialConditions/regions/Region.hpp"
 
 #include <limits>
 

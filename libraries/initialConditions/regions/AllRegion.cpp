@@ -1,5 +1,5 @@
 // `all` region: every particle of the body (see Region.hpp).
-#include "particles/regions/Region.hpp"
+#include "initialConditions/regions/Region.hpp"
 
 namespace sph
 {

@@ -6,7 +6,7 @@
 //   length  | length along the axis [m]           | required
 //   radius  | radius [m]                          | required
 //   spacing | particle spacing [m]                | required
-#include "generators/Generator.hpp"
+#include "initialConditions/generators/Generator.hpp"
 
 namespace sph
 {

@@ -1,0 +1,117 @@
+#include "sphSolid/SolidApplication.hpp"
+
+#include "core/Application.hpp"
+#include "core/CaseDictionaries.hpp"
+#include "core/CommandLine.hpp"
+#include "core/InputError.hpp"
+#include "core/LibraryLoader.hpp"
+#include "core/ModelListing.hpp"
+#include "solver/CaseSettings.hpp"
+#include "solver/ParticleFile.hpp"
+#include "solver/Simulation.hpp"
+
+#include <omp.h>
+
+#include <iostream>
+
+namespace sph
+{
+
+namespace
+{
+
+template <int D>
+int runDimension(const CaseDictionaries& dicts, const ControlSettings& control,
+                 const SchemeSettings& schemes, bool dryRun)
+{
+    const std::filesystem::path particleFile = particleFilePath(dicts.caseDir());
+    InitialParticles initial;
+    if (std::filesystem::exists(particleFile))
+    {
+        initial = readParticleFile(particleFile);
+    }
+    else if (dryRun && dicts.has("particlesDict"))
+    {
+        // Without particles yet, a dry run still checks system/particlesDict by building them.
+        initial = generateParticles(dicts.get("particlesDict"), D, dicts.caseDir());
+    }
+    else if (!dicts.has("particlesDict"))
+    {
+        throw InputError("the case has neither constant/particles.vtu nor system/particlesDict",
+                         {"Write system/particlesDict (the bodies' geometry) and run sphParticles; "
+                          "see tutorials/ for examples."});
+    }
+    else
+    {
+        initial = readParticleFile(particleFile); // reports the missing file
+    }
+    Simulation<D> simulation(dicts, control, schemes, initial);
+    RunLog log(std::cout);
+    log.header(simulation.describe());
+    if (dryRun)
+    {
+        log.line("Dry run: every dictionary is valid and every model was built; not running.");
+        return 0;
+    }
+    log.line("");
+    simulation.run(log);
+    return 0;
+}
+
+} // namespace
+
+int sphSolidMain(int argc, const char* const* argv)
+{
+    CommandLine commandLine("sphSolid", "SPH for elastic and hyperelastic solids: runs a case");
+    commandLine.options().add_options()(
+        "threads", boost::program_options::value<int>()->value_name("N"),
+        "number of OpenMP threads (default: OMP_NUM_THREADS or all cores)");
+    if (!commandLine.parse(argc, argv))
+    {
+        return 0;
+    }
+    if (commandLine.values().count("threads"))
+    {
+        const int threads = commandLine.values()["threads"].as<int>();
+        if (threads < 1)
+        {
+            throw InputError("-threads must be at least 1 (got " + std::to_string(threads) + ")");
+        }
+        omp_set_num_threads(threads);
+    }
+    LibraryLoader::loadDefaultLibraries();
+    const std::filesystem::path caseDir = commandLine.caseDir();
+
+    if (commandLine.listTypes())
+    {
+        // A case's own libraries show up in the listing too.
+        if (std::filesystem::exists(caseDir / "system" / "controlDict"))
+        {
+            CaseDictionaries dicts(caseDir);
+            dicts.read({"controlDict"});
+            loadCaseLibraries(ControlSettings::read(dicts), caseDir);
+        }
+        listTypes(std::cout, commandLine.listFamily(), commandLine.listFamilyLocation());
+        return 0;
+    }
+
+    CaseDictionaries dicts(caseDir);
+    dicts.read({"controlDict", "sphSchemes", "bodies"}, {"particlesDict"});
+    dicts.applySets(commandLine.sets());
+    std::cout << "sphSolid " << projectVersion() << "  (" << commandLine.invocation() << ")\n"
+              << "Threads     " << omp_get_max_threads() << "\n";
+    const ControlSettings control = ControlSettings::read(dicts);
+    loadCaseLibraries(control, dicts.caseDir());
+    const SchemeSettings schemes = SchemeSettings::read(dicts.get("sphSchemes"));
+    switch (schemes.dimension)
+    {
+    case 1:
+        return runDimension<1>(dicts, control, schemes, commandLine.dryRun());
+    case 2:
+        return runDimension<2>(dicts, control, schemes, commandLine.dryRun());
+    default:
+        return runDimension<3>(dicts, control, schemes, commandLine.dryRun());
+    }
+}
+
+} // namespace sph
