@@ -3,9 +3,8 @@
 #include "DictionaryLexer.hpp"
 #include "InputError.hpp"
 #include "Suggest.hpp"
+#include "TextFile.hpp"
 
-#include <fstream>
-#include <sstream>
 
 namespace sph
 {
@@ -15,15 +14,7 @@ namespace
 
 std::string readFile(const std::filesystem::path& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-    {
-        throw InputError("cannot open dictionary file '" + path.string() + "'",
-                         {"Check that the file exists and is readable."});
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return readTextFile(path, "dictionary file", {"Check that the file exists and is readable."});
 }
 
 class Parser

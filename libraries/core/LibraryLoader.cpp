@@ -3,6 +3,7 @@
 #include "DictionaryParser.hpp"
 #include "InputError.hpp"
 #include "Registry.hpp"
+#include "TextFile.hpp"
 
 #include <dlfcn.h>
 
@@ -139,19 +140,13 @@ void LibraryLoader::load(const std::string& name, const SourceLocation& where,
 void LibraryLoader::loadDefaultLibraries()
 {
     const std::filesystem::path file = etcDirectory() / "defaultLibs";
-    std::ifstream in(file);
-    if (!in)
-    {
-        throw InputError("cannot read the list of model libraries '" + file.string() + "'",
-                         {"It is installed next to the library folder " +
-                              libraryDirectory().string() + ".",
-                          "Rebuild (cmake --build build) or reinstall sphSolid."});
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    auto source = std::make_shared<const SourceText>(file.string(), text.str());
+    const std::string text = readTextFile(
+        file, "the list of model libraries",
+        {"It is installed next to the library folder " + libraryDirectory().string() + ".",
+         "Rebuild (cmake --build build) or reinstall sphSolid."});
+    auto source = std::make_shared<const SourceText>(file.string(), text);
     int lineNumber = 0;
-    std::stringstream lines(text.str());
+    std::stringstream lines(text);
     std::string line;
     while (std::getline(lines, line))
     {
