@@ -11,6 +11,8 @@
 // the largest longitudinal wave speed in the reference configuration at the current F.
 
 #include "core/Registry.hpp"
+#include "particles/ParticleFields.hpp"
+#include "particles/ParticleSet.hpp"
 #include "particles/Types.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -32,6 +34,10 @@ public:
     static constexpr int dimension = D;
     struct Args
     {
+        // Where a material with history declares its per-particle fields (null in tests that
+        // build a material alone), and the particles of the body it serves.
+        ParticleFields<D>* fields = nullptr;
+        BodyRange particles;
     };
 
     virtual ~Material() = default;

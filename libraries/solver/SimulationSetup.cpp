@@ -71,7 +71,7 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
 
     kernel_ = selectModel<Kernel>(*schemes.kernel, Kernel::Args{D, spacing_}, D);
     formulation_ = selectModel<Formulation<D>>(*schemes.formulation, {}, D);
-    scheme_ = selectModel<Stabilisation<D>>(*schemes.stabilisation, {kernel_.get()}, D);
+    scheme_ = selectModel<Stabilisation<D>>(*schemes.stabilisation, {kernel_.get(), &fields_}, D);
     const typename Contact<D>::Args contactArgs{kernel_.get(), bodyNames_};
     if (schemes.contact)
     {
@@ -212,7 +212,7 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
         }
         const Dictionary& dict = entry->dict();
         const Params p = bodySchema().validate(dict, "a body", D, TypeEntry::isKey);
-        materialModels_.push_back(selectModel<Material<D>>(p.dict("material"), {}, D));
+        materialModels_.push_back(selectModel<Material<D>>(p.dict("material"), {&fields_, particles_.bodies[b]}, D));
         materials_.push_back(materialModels_.back().get());
         const BodyRange& range = particles_.bodies[b];
         const Vec<D> velocity = toVec<D>(p.vector("velocity"));

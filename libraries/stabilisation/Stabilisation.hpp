@@ -14,6 +14,7 @@
 #include "core/Registry.hpp"
 #include "kernels/Kernel.hpp"
 #include "materials/Material.hpp"
+#include "particles/ParticleFields.hpp"
 #include "particles/ReferenceConfiguration.hpp"
 
 #include <string>
@@ -97,6 +98,7 @@ public:
     struct Args
     {
         const Kernel* kernel = nullptr;
+        ParticleFields<D>* fields = nullptr; // for a scheme's own per-particle fields
     };
 
     virtual ~Stabilisation() = default;
