@@ -2,6 +2,7 @@
 
 #include "core/InputError.hpp"
 #include "io/AtomicFile.hpp"
+#include "io/DatTable.hpp"
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
@@ -97,74 +98,6 @@ double median(std::vector<double> values)
     std::sort(values.begin(), values.end());
     return values[values.size() / 2];
 }
-
-// A gnuplot table: the columns by name (first: time).
-struct Table
-{
-    std::vector<std::string> names;
-    std::vector<std::vector<double>> columns;
-
-    static Table read(const std::filesystem::path& file)
-    {
-        std::ifstream in(file);
-        if (!in)
-        {
-            throw std::runtime_error("cannot read " + file.string());
-        }
-        Table table;
-        std::string line;
-        while (std::getline(in, line))
-        {
-            std::istringstream words(line);
-            if (line.rfind("#", 0) == 0)
-            {
-                std::string word;
-                words >> word;
-                while (words >> word)
-                {
-                    table.names.push_back(word);
-                }
-                continue;
-            }
-            std::vector<double> row;
-            double value;
-            while (words >> value)
-            {
-                row.push_back(value);
-            }
-            if (row.empty())
-            {
-                continue;
-            }
-            table.columns.resize(std::max(table.columns.size(), row.size()));
-            for (std::size_t c = 0; c < row.size(); ++c)
-            {
-                table.columns[c].push_back(row[c]);
-            }
-        }
-        return table;
-    }
-
-    // A column by name or 1-based number.
-    const std::vector<double>& column(const std::string& name) const
-    {
-        for (std::size_t c = 0; c < names.size() && c < columns.size(); ++c)
-        {
-            if (names[c] == name)
-            {
-                return columns[c];
-            }
-        }
-        char* end = nullptr;
-        const long number = std::strtol(name.c_str(), &end, 10);
-        if (end && *end == '\0' && number >= 1 &&
-            static_cast<std::size_t>(number) <= columns.size())
-        {
-            return columns[static_cast<std::size_t>(number - 1)];
-        }
-        throw std::runtime_error("no column '" + name + "'");
-    }
-};
 
 // max or rms of (value - reference interpolated at the value's times) over the common time
 // range, relative to `scale`, or to max |reference| when scale is 0.
@@ -376,21 +309,21 @@ void StudyRunner::computeMetrics(VariantResult& result) const
             }
             else
             {
-                const Table own = Table::read(dir / metric.file);
-                Table reference;
+                const DatTable own = readDatTable(dir / metric.file);
+                DatTable reference;
                 std::string referenceColumn = metric.column;
                 if (metric.type == "referenceVariant")
                 {
-                    reference = Table::read(variantDir(study_.referenceOf(metric, result.variant)) /
-                                            metric.file);
+                    reference = readDatTable(
+                        variantDir(study_.referenceOf(metric, result.variant)) / metric.file);
                 }
                 else
                 {
-                    reference = Table::read(caseDir_ / metric.reference);
+                    reference = readDatTable(caseDir_ / metric.reference, DatHeader::optional);
                     referenceColumn = metric.referenceColumn;
                 }
-                value = difference(own.columns.at(0), own.column(metric.column),
-                                   reference.columns.at(0), reference.column(referenceColumn),
+                value = difference(own.columnAt(0), own.column(metric.column),
+                                   reference.columnAt(0), reference.column(referenceColumn),
                                    metric.norm, metric.scale);
             }
         }
