@@ -1,4 +1,5 @@
 #include "StudyDefinition.hpp"
+#include "StudyMetric.hpp"
 
 #include "core/InputError.hpp"
 #include "core/Schema.hpp"
@@ -11,7 +12,6 @@ namespace sph
 
 namespace
 {
-
 
 Schema studySchema()
 {
@@ -27,8 +27,9 @@ Schema studySchema()
         .add(Key::integer("threads", "OpenMP threads per run (0: all cores)")
                  .min(0)
                  .defaultValue("0"))
-        .add(Key::dict("metrics", "error measures: name { type exactSolution | summary | "
-                                  "referenceVariant | referenceFile; ... }; the first is plotted"))
+        .add(Key::dict("metrics", "what each run is measured by: name { type exactSolution | "
+                                  "summary | referenceVariant | referenceFile; ... } (sphStudy "
+                                  "-listTypes studyMetric); the first is plotted"))
         .add(Key::dict("plot", "{ groupBy AXIS; along AXIS; }: one line per level of groupBy, "
                                "connecting the levels of along")
                  .optional())
@@ -47,94 +48,6 @@ Schema levelSchema()
                  .defaultValue("()"))
         .add(Key::stringList("solver", "overrides for sphSolid, e.g. (\"courant=0.1\")")
                  .defaultValue("()"));
-}
-
-Schema metricSchema()
-{
-    return Schema()
-        .add(Key::word("type", "how the error is measured")
-                 .choices({"exactSolution", "summary", "referenceVariant", "referenceFile"}))
-        .add(Key::word("functionObject", "exactSolution: the function object's name").optional())
-        .add(Key::string("value", "exactSolution: its result (default relativeLinfError); "
-                                  "summary: a path in summary.json, e.g. functions/energy/maxDrift")
-                 .optional())
-        .add(Key::string("file", "referenceVariant/referenceFile: a table of each variant, "
-                                 "relative to its case")
-                 .optional())
-        .add(Key::word("column", "the column of that table").optional())
-        .add(Key::word("variant", "referenceVariant: the variant to compare with").optional())
-        .add(Key::dict("referenceLevels", "referenceVariant: { axis level; ... }: compare each "
-                                          "variant with the one that differs only in these levels")
-                 .optional())
-        .add(Key::real("scale", "divide the difference by this instead of max |reference|")
-                 .positive()
-                 .optional())
-        .add(Key::string("reference", "referenceFile: the reference table, relative to the case")
-                 .optional())
-        .add(Key::string("referenceColumn", "referenceFile: its column (name or 1-based number)")
-                 .optional())
-        .add(Key::word("norm", "max or rms of the difference, relative to max |reference|")
-                 .choices({"max", "rms"})
-                 .defaultValue("max"));
-}
-
-// The reference of a referenceVariant metric: one named variant, or levels that replace each
-// variant's own on some axes.
-void readReference(const Params& q, const StudyDefinition& study, StudyMetric& metric,
-                   const std::vector<std::string>& variantNames)
-{
-    if (q.has("variant") == q.has("referenceLevels"))
-    {
-        throw InputError(metric.where,
-                         "metric '" + metric.name +
-                             "' of type referenceVariant needs either 'variant' or "
-                             "'referenceLevels'",
-                         {"variant NAME; compares every variant with one; referenceLevels { axis "
-                          "level; } with the variant that differs only there."});
-    }
-    if (q.has("variant"))
-    {
-        metric.variant = q.word("variant");
-        if (std::find(variantNames.begin(), variantNames.end(), metric.variant) ==
-            variantNames.end())
-        {
-            q.fail("variant", "metric '" + metric.name + "': no variant '" + metric.variant + "'",
-                   {"Variants are the level names joined by '_' in axis order, e.g. " +
-                        variantNames.front() + ".",
-                    didYouMean(metric.variant, variantNames)});
-        }
-        return;
-    }
-    for (const Entry& entry : q.dict("referenceLevels").entries())
-    {
-        const auto axis = std::find_if(study.axes.begin(), study.axes.end(),
-                                       [&](const StudyAxis& a) { return a.name == entry.key(); });
-        std::vector<std::string> names;
-        for (const auto& a : study.axes)
-        {
-            names.push_back(a.name);
-        }
-        if (axis == study.axes.end())
-        {
-            throw InputError(entry.keyLocation(), "referenceLevels: no axis '" + entry.key() + "'",
-                             {"Axes: " + joinSorted(names), didYouMean(entry.key(), names)});
-        }
-        const std::string level =
-            entry.isDict() || entry.items().size() != 1 ? "" : entry.items()[0].text();
-        names.clear();
-        for (const auto& l : axis->levels)
-        {
-            names.push_back(l.name);
-        }
-        if (std::find(names.begin(), names.end(), level) == names.end())
-        {
-            throw InputError(entry.isDict() ? entry.keyLocation() : entry.valueLocation(),
-                             "referenceLevels: axis '" + entry.key() + "' has no level '" + level +
-                                 "'",
-                             {"Levels: " + joinSorted(names), didYouMean(level, names)});
-        }
-        metric.referenceLevels[entry.key()] = level;
-    }
 }
 
 } // namespace
@@ -181,63 +94,18 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
     {
         throw InputError(p.location("axes"), "studyDict: 'axes' defines no axis");
     }
-    std::vector<std::string> variantNames;
-    for (const auto& variant : study.variants())
-    {
-        variantNames.push_back(variant.name);
-    }
     for (const Entry& entry : p.dict("metrics").entries())
     {
         if (!entry.isDict())
         {
             throw InputError(entry.keyLocation(),
-                             "metric '" + entry.key() + "' must be a dictionary { type ...; }");
+                             "metric '" + entry.key() + "' must be a dictionary { type ...; }",
+                             {"Metric types: " +
+                              joinSorted(Registry<StudyMetric>::names()) +
+                              " (sphStudy -listTypes studyMetric)"});
         }
-        const Params q = metricSchema().validate(entry.dict(), "a metric", 0, TypeEntry::isKey);
-        StudyMetric metric;
-        metric.name = entry.key();
-        metric.type = q.word("type");
-        metric.norm = q.word("norm");
-        metric.scale = q.has("scale") ? q.real("scale") : 0.0;
-        metric.where = entry.keyLocation();
-        const auto need = [&](const char* key)
-        {
-            if (!q.has(key))
-            {
-                throw InputError(entry.keyLocation(), "metric '" + metric.name + "' of type " +
-                                                          metric.type + " needs '" + key + "'");
-            }
-        };
-        if (metric.type == "exactSolution")
-        {
-            need("functionObject");
-            metric.value = "functions/" + q.word("functionObject") + "/" +
-                           (q.has("value") ? q.string("value") : "relativeLinfError");
-        }
-        else if (metric.type == "summary")
-        {
-            need("value");
-            metric.value = q.string("value");
-        }
-        else
-        {
-            need("file");
-            need("column");
-            metric.file = q.string("file");
-            metric.column = q.word("column");
-            if (metric.type == "referenceVariant")
-            {
-                readReference(q, study, metric, variantNames);
-            }
-            else
-            {
-                need("reference");
-                need("referenceColumn");
-                metric.reference = q.string("reference");
-                metric.referenceColumn = q.string("referenceColumn");
-            }
-        }
-        study.metrics.push_back(metric);
+        study.metrics.push_back(
+            selectModel<StudyMetric>(entry.dict(), {study, entry.key()}, 0));
     }
     if (study.metrics.empty())
     {
@@ -272,7 +140,7 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
         std::vector<std::string> metricNames;
         for (const auto& metric : study.metrics)
         {
-            metricNames.push_back(metric.name);
+            metricNames.push_back(metric->name());
         }
         for (const Entry& entry : p.dict("stable").entries())
         {
@@ -364,29 +232,10 @@ std::vector<StudyVariant> StudyDefinition::variants() const
                           [&](const StudyVariant& v)
                           {
                               return std::any_of(metrics.begin(), metrics.end(),
-                                                 [&](const StudyMetric& m) {
-                                                     return m.type == "referenceVariant" &&
-                                                            referenceOf(m, v) == v.name;
-                                                 });
+                                                 [&](const auto& m)
+                                                 { return m->referenceOf(v) == v.name; });
                           });
     return result;
-}
-
-std::string StudyDefinition::referenceOf(const StudyMetric& metric,
-                                         const StudyVariant& variant) const
-{
-    if (!metric.variant.empty())
-    {
-        return metric.variant;
-    }
-    std::string name;
-    for (std::size_t a = 0; a < axes.size(); ++a)
-    {
-        const auto level = metric.referenceLevels.find(axes[a].name);
-        name += (a ? "_" : "") +
-                (level != metric.referenceLevels.end() ? level->second : variant.levels[a]);
-    }
-    return name;
 }
 
 } // namespace sph

@@ -1,5 +1,5 @@
 // sphStudy end to end on a short Dyka bar: variants, metrics of every kind, references first,
-// resume, report files, and errors in studyDict.
+// resume, report files, errors in studyDict, and the metric types in -listTypes.
 #include "support/CaseRunner.hpp"
 
 #include <fstream>
@@ -44,6 +44,16 @@ metrics
         file    postProcessing/tipError/tipError.dat;
         column  u_numeric;
     }
+    // Against a hand-written table of zeros (no header): the largest |u| in mm.
+    largestTip
+    {
+        type            referenceFile;
+        file            postProcessing/tipError/tipError.dat;
+        column          u_numeric;
+        reference       "zeros.dat";
+        referenceColumn "2";            // a number in quotes: a string key
+        scale           1e-3;
+    }
 }
 plot { groupBy scheme; along resolution; }
 stable { selfConvergence { max 1e-3; } }    // only the reference resolution passes
@@ -83,6 +93,7 @@ TEST_CASE("sphStudy runs every variant, measures, reports and resumes", "[study]
     TempDir dir;
     const fs::path caseDir = copyTutorial("bar1D/dykaBar", dir.path());
     std::ofstream(caseDir / "system" / "studyDict") << studyDict;
+    std::ofstream(caseDir / "zeros.dat") << "0 0\n1 0\n";
 
     std::string output;
     REQUIRE(runProcess("sphStudy", {"-case", caseDir.string()}, &output) == 0);
@@ -122,6 +133,14 @@ TEST_CASE("sphStudy runs every variant, measures, reports and resumes", "[study]
             CHECK(self < 0.94);
         }
         CHECK((std::stod(row.at("againstOne")) == 0.0) == (row.at("variant") == "n40_TLnone"));
+        double largest = 0.0;
+        for (double u : readTable(study / "runs" / row.at("variant") /
+                                  "postProcessing/tipError/tipError.dat")
+                            .column("u_numeric"))
+        {
+            largest = std::max(largest, std::abs(u));
+        }
+        CHECK(std::stod(row.at("largestTip")) == Approx(largest / 1e-3).epsilon(1e-8));
         if (row.at("resolution") == "n40")
         {
             CHECK(row.at("verdict") == "\"pass\"");
@@ -190,11 +209,84 @@ TEST_CASE("sphStudy reports mistakes in studyDict at their place", "[study][erro
         CHECK_THAT(output, Catch::Contains("stable: 'selfConvergenc' must be one of the metrics"));
         CHECK_THAT(output, Catch::Contains("Did you mean 'selfConvergence'?"));
     }
+    SECTION("an unknown metric type")
+    {
+        const std::string output = dryRunWith("type summary;", "type sumary;");
+        CHECK_THAT(output, Catch::Contains("unknown studyMetric type 'sumary'"));
+        CHECK_THAT(output, Catch::Contains("Valid studyMetric types (4): exactSolution, "
+                                           "referenceFile, referenceVariant, summary"));
+        CHECK_THAT(output, Catch::Contains("Did you mean 'summary'?"));
+    }
+    SECTION("a key of another metric type")
+    {
+        const std::string output =
+            dryRunWith("functionObject tipError; }", "functionObject tipError; norm rms; }");
+        CHECK_THAT(output, Catch::Contains("unknown key 'norm' in 'metrics/tipError'"));
+        CHECK_THAT(output, Catch::Contains("exactSolution accepts: functionObject, type, value"));
+    }
+    SECTION("a metric without a key its type needs")
+    {
+        const std::string output = dryRunWith("reference       \"zeros.dat\";", "");
+        CHECK_THAT(output, Catch::Contains("missing required key 'reference' in "
+                                           "'metrics/largestTip'"));
+        CHECK_THAT(output, Catch::Contains("referenceFile needs:"));
+    }
     SECTION("a stability bound that is not a dictionary")
     {
         const std::string output = dryRunWith("stable { selfConvergence { max 1e-3; } }",
                                               "stable { selfConvergence 1e-3; }");
         CHECK_THAT(output, Catch::Contains("system/studyDict:"));
         CHECK_THAT(output, Catch::Contains("the bounds of 'selfConvergence' must be a dictionary"));
+    }
+}
+
+TEST_CASE("sphStudy -listTypes lists the metric types with their keys", "[study]")
+{
+    const std::vector<std::vector<std::string>> calls{{"-listTypes", "studyMetric"},
+                                                      {"-listTypes"}};
+    for (const auto& args : calls)
+    {
+        std::string output;
+        REQUIRE(runProcess("sphStudy", args, &output) == 0);
+        INFO(output);
+        CHECK_THAT(output, Catch::Contains("studyMetric (4 types)"));
+        // Each type, then its description, origin and keys (name, type, default or required).
+        const std::vector<std::pair<std::string, std::vector<std::string>>> types{
+            {"exactSolution", {"functionObject  (word, required)",
+                               "value  (string, default relativeLinfError)"}},
+            {"referenceFile", {"file  (string, required)", "column  (word, required)",
+                               "norm  (word, default max, one of: max rms)",
+                               "scale  (real, optional", "reference  (string, required)",
+                               "referenceColumn  (string, required)"}},
+            {"referenceVariant", {"file  (string, required)", "column  (word, required)",
+                                  "norm  (word, default max", "scale  (real, optional",
+                                  "variant  (word, optional)",
+                                  "referenceLevels  (dictionary, optional)"}},
+            {"summary", {"value  (string, required)"}}};
+        // The listing by type: "  name" starts an entry, its lines are indented further.
+        std::map<std::string, std::string> entries;
+        std::string current;
+        std::istringstream lines(output);
+        for (std::string line; std::getline(lines, line);)
+        {
+            if (line.size() > 2 && line.compare(0, 2, "  ") == 0 && line[2] != ' ')
+            {
+                current = line.substr(2);
+            }
+            else if (!current.empty())
+            {
+                entries[current] += line + "\n";
+            }
+        }
+        CHECK(entries.size() == types.size());
+        for (const auto& [type, keys] : types)
+        {
+            const std::string& entry = entries[type];
+            CHECK_THAT(entry, Catch::Contains("[sphStudy, any]"));
+            for (const auto& key : keys)
+            {
+                CHECK_THAT(entry, Catch::Contains("      " + key));
+            }
+        }
     }
 }
