@@ -18,7 +18,7 @@ struct DatTable
     std::vector<std::vector<double>> rows; // each as many values as there are columns
 
     // The index of column `name`, or of its 1-based number when no column has that name
-    // (e.g. referenceColumn 2). InputError naming the file, the valid columns and the closest.
+    // (referenceColumn "2"). InputError naming the file, the valid columns and the closest.
     std::size_t columnIndex(const std::string& name) const;
     // The values of column `name` (see columnIndex), one per row.
     std::vector<double> column(const std::string& name) const;

@@ -38,7 +38,11 @@ Schema studySchema()
                  .optional())
         .add(Key::boolean("rank", "list the variants with the best first metric for their "
                                   "wall time (no for stability studies)")
-                 .defaultValue("yes"));
+                 .defaultValue("yes"))
+        .add(Key::string("baseCase", "the case each variant copies (its system/ and constant/), "
+                                     "relative to this one, e.g. \"../dykaBar\" (default: this "
+                                     "case)")
+                 .optional());
 }
 
 Schema levelSchema()
@@ -50,16 +54,132 @@ Schema levelSchema()
                  .defaultValue("()"));
 }
 
+Schema restrictedLevelSchema()
+{
+    return levelSchema().add(
+        Key::dict("only", "{ axis (level ...); ... }: combine this level only with these levels "
+                          "of other axes (default: with every level)")
+            .optional());
+}
+
+// A level's `only { axis (level ...); ... }`: the levels of the other axes it is combined with.
+std::map<std::string, std::vector<std::string>>
+readOnly(const Dictionary& only, const std::vector<StudyAxis>& axes, const std::string& ownAxis)
+{
+    std::vector<std::string> axisNames;
+    for (const auto& axis : axes)
+    {
+        if (axis.name != ownAxis)
+        {
+            axisNames.push_back(axis.name);
+        }
+    }
+    std::map<std::string, std::vector<std::string>> result;
+    for (const Entry& entry : only.entries())
+    {
+        const auto axis = std::find_if(axes.begin(), axes.end(),
+                                       [&](const StudyAxis& a) { return a.name == entry.key(); });
+        if (axis == axes.end() || axis->name == ownAxis)
+        {
+            throw InputError(entry.keyLocation(),
+                             axis == axes.end()
+                                 ? "only: no axis '" + entry.key() + "'"
+                                 : "only: '" + ownAxis + "' is this level's own axis",
+                             {"Other axes: " + joinSorted(axisNames),
+                              didYouMean(entry.key(), axisNames)});
+        }
+        const std::vector<Item>& value =
+            entry.items().size() == 1 && entry.items()[0].isList() ? entry.items()[0].items()
+                                                                   : entry.items();
+        if (entry.isDict() || value.empty())
+        {
+            throw InputError(entry.keyLocation(),
+                             "only: '" + entry.key() + "' needs the levels it may be combined with",
+                             {"e.g. only { " + entry.key() + " (" + axis->levels.front().name +
+                              "); }"});
+        }
+        std::vector<std::string> levelNames;
+        for (const auto& level : axis->levels)
+        {
+            levelNames.push_back(level.name);
+        }
+        for (const Item& item : value)
+        {
+            if (item.kind() == Item::Kind::List ||
+                std::find(levelNames.begin(), levelNames.end(), item.text()) == levelNames.end())
+            {
+                throw InputError(item.location(),
+                                 "only: axis '" + entry.key() + "' has no level " +
+                                     (item.isList() ? item.describe() : "'" + item.text() + "'"),
+                                 {"Levels: " + joinSorted(levelNames),
+                                  didYouMean(item.text(), levelNames)});
+            }
+            result[entry.key()].push_back(item.text());
+        }
+    }
+    return result;
+}
+
+// The `only` of every level (they may name axes defined after their own), then a check that
+// every level is still in some variant.
+void readRestrictions(const Dictionary& axesDict, StudyDefinition& study)
+{
+    std::size_t a = 0;
+    for (const Entry& axisEntry : axesDict.entries())
+    {
+        std::size_t l = 0;
+        for (const Entry& levelEntry : axisEntry.dict().entries())
+        {
+            if (const Entry* only = levelEntry.dict().find("only"); only && only->isDict())
+            {
+                study.axes[a].levels[l].only = readOnly(only->dict(), study.axes, axisEntry.key());
+            }
+            ++l;
+        }
+        ++a;
+    }
+    const auto variants = study.variants();
+    a = 0;
+    for (const Entry& axisEntry : axesDict.entries())
+    {
+        for (const Entry& levelEntry : axisEntry.dict().entries())
+        {
+            if (std::none_of(variants.begin(), variants.end(), [&](const StudyVariant& v)
+                             { return v.levels[a] == levelEntry.key(); }))
+            {
+                throw InputError(levelEntry.keyLocation(),
+                                 "level '" + levelEntry.key() + "' of axis '" + axisEntry.key() +
+                                     "' is in no variant",
+                                 {"The 'only' lists of the levels leave no combination with it."});
+            }
+        }
+        ++a;
+    }
+}
+
 } // namespace
 
-StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
+StudyDefinition StudyDefinition::read(const Dictionary& studyDict,
+                                      const std::filesystem::path& caseDir)
 {
     const Params p = studySchema().validate(studyDict, "studyDict");
     StudyDefinition study;
+    study.baseCase = caseDir;
+    if (p.has("baseCase"))
+    {
+        study.baseCase = (caseDir / p.string("baseCase")).lexically_normal();
+        if (!std::filesystem::is_directory(study.baseCase / "system") ||
+            !std::filesystem::is_directory(study.baseCase / "constant"))
+        {
+            p.fail("baseCase", "no case at '" + study.baseCase.string() + "'",
+                   {"baseCase names a case folder (with system/ and constant/), relative to the "
+                    "study's folder, e.g. \"../dykaBar\"."});
+        }
+    }
     if (p.has("common"))
     {
         const Params q = levelSchema().validate(p.dict("common"), "common");
-        study.common = {"common", q.stringList("particles"), q.stringList("solver")};
+        study.common = {"common", q.stringList("particles"), q.stringList("solver"), {}};
     }
     study.repeats = p.integer("repeats");
     study.threads = p.integer("threads");
@@ -80,9 +200,10 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
                                  "level '" + levelEntry.key() + "' of axis '" + axis.name +
                                      "' must be a dictionary { particles (...); solver (...); }");
             }
-            const Params q = levelSchema().validate(levelEntry.dict(), "a study level");
+            const Params q =
+                restrictedLevelSchema().validate(levelEntry.dict(), "a study level");
             axis.levels.push_back(
-                {levelEntry.key(), q.stringList("particles"), q.stringList("solver")});
+                {levelEntry.key(), q.stringList("particles"), q.stringList("solver"), {}});
         }
         if (axis.levels.empty())
         {
@@ -94,6 +215,7 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
     {
         throw InputError(p.location("axes"), "studyDict: 'axes' defines no axis");
     }
+    readRestrictions(p.dict("axes"), study);
     for (const Entry& entry : p.dict("metrics").entries())
     {
         if (!entry.isDict())
@@ -110,6 +232,28 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
     if (study.metrics.empty())
     {
         throw InputError(p.location("metrics"), "studyDict: 'metrics' defines no metric");
+    }
+    // A reference variant that `only` leaves out could never be measured against.
+    std::vector<std::string> variantNames;
+    for (const auto& variant : study.variants())
+    {
+        variantNames.push_back(variant.name);
+    }
+    for (const auto& metric : study.metrics)
+    {
+        for (const auto& variant : study.variants())
+        {
+            const std::string reference = metric->referenceOf(variant);
+            if (!reference.empty() && std::find(variantNames.begin(), variantNames.end(),
+                                                reference) == variantNames.end())
+            {
+                throw InputError(p.dict("metrics").find(metric->name())->keyLocation(),
+                                 "metric '" + metric->name() + "' compares " + variant.name +
+                                     " with " + reference + ", which is not a variant",
+                                 {"The 'only' lists of the levels leave " + reference +
+                                  " out of the study; compare with a variant that is in it."});
+            }
+        }
     }
     std::vector<std::string> axisNames;
     for (const auto& axis : study.axes)
@@ -196,13 +340,47 @@ std::size_t StudyDefinition::axisIndex(const std::string& name) const
     return 0;
 }
 
+bool StudyDefinition::nextCombination(std::vector<std::size_t>& index) const
+{
+    for (std::size_t a = axes.size(); a-- > 0;)
+    {
+        if (++index[a] < axes[a].levels.size())
+        {
+            return true;
+        }
+        index[a] = 0;
+    }
+    return false;
+}
+
+bool StudyDefinition::allowed(const std::vector<std::size_t>& index) const
+{
+    for (std::size_t a = 0; a < axes.size(); ++a)
+    {
+        for (const auto& [axis, levels] : axes[a].levels[index[a]].only)
+        {
+            const std::size_t b = axisIndex(axis);
+            if (std::find(levels.begin(), levels.end(), axes[b].levels[index[b]].name) ==
+                levels.end())
+            {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
 std::vector<StudyVariant> StudyDefinition::variants() const
 {
     std::vector<StudyVariant> result;
     std::vector<std::size_t> index(axes.size(), 0); // an odometer over the levels
     bool done = false;
-    while (!done)
+    for (; !done; done = !nextCombination(index))
     {
+        if (!allowed(index))
+        {
+            continue;
+        }
         StudyVariant variant;
         variant.particles = common.particles;
         variant.solver = common.solver;
@@ -216,16 +394,6 @@ std::vector<StudyVariant> StudyDefinition::variants() const
             variant.solver.insert(variant.solver.end(), level.solver.begin(), level.solver.end());
         }
         result.push_back(variant);
-        done = true;
-        for (std::size_t a = axes.size(); a-- > 0;)
-        {
-            if (++index[a] < axes[a].levels.size())
-            {
-                done = false;
-                break;
-            }
-            index[a] = 0;
-        }
     }
     // Variants that others are compared with run first.
     std::stable_partition(result.begin(), result.end(),

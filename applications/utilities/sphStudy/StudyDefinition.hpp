@@ -1,9 +1,14 @@
 #pragma once
 // system/studyDict: what a study varies, how it measures each run, how it plots.
 //
+//   baseCase "../dykaBar";      // optional: the case the variants copy (default: this one)
 //   axes                        // every combination of levels is a variant
 //   {
-//       resolution { n40 { particles ("bar.n=40"); } n80 { particles ("bar.n=80"); } }
+//       resolution
+//       {
+//           n40  { particles ("bar.n=40"); }
+//           n160 { particles ("bar.n=160"); only { scheme (ULgradF); } }  // not with TLnone
+//       }
 //       scheme
 //       {
 //           TLnone  { solver ("formulation.type=totalLagrangian" "stabilisation.type=none"); }
@@ -34,7 +39,10 @@
 //   rank     no;                // list the error-for-time Pareto front (default yes)
 //
 // A level's `particles` overrides go to sphParticles, its `solver` overrides to sphSolid, each
-// as one -set argument. Variant names join the level names with '_' in axis order.
+// as one -set argument; its optional `only { axis (level ...); }` combines it with those levels
+// of other axes alone. Variant names join the level names with '_' in axis order. Each variant
+// runs in a copy of the base case's system/ and constant/ under postProcessing/study/runs/ of
+// the study's own folder, so one case can have several studies (e.g. tutorials/*/schemeComparison).
 //
 // The metric types are a model family (StudyMetric.hpp, one file each under metrics/): the keys
 // of each, with their defaults, are listed by `sphStudy -listTypes studyMetric`:
@@ -66,6 +74,8 @@ struct StudyLevel
     std::string name;
     std::vector<std::string> particles; // -set overrides for sphParticles
     std::vector<std::string> solver;    // -set overrides for sphSolid
+    // axis -> the levels of it this level is combined with (an axis not named: all of them)
+    std::map<std::string, std::vector<std::string>> only;
 };
 
 struct StudyAxis
@@ -92,6 +102,7 @@ struct StudyVariant
 
 struct StudyDefinition
 {
+    std::filesystem::path baseCase; // the case each variant copies (default: the study's own)
     std::vector<StudyAxis> axes;
     StudyLevel common; // overrides given to every variant first
     std::vector<std::shared_ptr<const StudyMetric>> metrics; // in studyDict's order
@@ -102,11 +113,16 @@ struct StudyDefinition
     std::vector<StabilityBound> stable; // empty: no verdict column
     bool rank = true;                   // report the Pareto front of the first metric
 
-    // Reads and validates system/studyDict.
-    static StudyDefinition read(const Dictionary& studyDict);
-    // Every combination of levels, references first.
+    // Reads and validates system/studyDict of the case `caseDir`.
+    static StudyDefinition read(const Dictionary& studyDict, const std::filesystem::path& caseDir);
+    // Every combination of levels that their `only` allows, references first.
     std::vector<StudyVariant> variants() const;
     std::size_t axisIndex(const std::string& name) const;
+
+private:
+    // The odometer over the levels (index[a]: the level of axis a); false after the last.
+    bool nextCombination(std::vector<std::size_t>& index) const;
+    bool allowed(const std::vector<std::size_t>& index) const;
 };
 
 } // namespace sph

@@ -171,7 +171,7 @@ VariantResult StudyRunner::runVariant(const StudyVariant& variant)
     }
     std::error_code ec;
     std::filesystem::remove_all(dir, ec);
-    copyCase(caseDir_, dir);
+    copyCase(study_.baseCase, dir);
 
     std::vector<std::string> args{"-case", dir.string()};
     for (const auto& set : variant.particles)

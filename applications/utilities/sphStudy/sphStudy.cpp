@@ -64,10 +64,11 @@ int study(int argc, char** argv)
     sph::CaseDictionaries dicts(commandLine.caseDir());
     dicts.read({"studyDict"});
     dicts.applySets(commandLine.sets());
-    const sph::StudyDefinition definition = sph::StudyDefinition::read(dicts.get("studyDict"));
+    const sph::StudyDefinition definition =
+        sph::StudyDefinition::read(dicts.get("studyDict"), commandLine.caseDir());
     const auto variants = definition.variants();
     std::cout << "sphStudy " << sph::projectVersion() << ": " << variants.size() << " variants of "
-              << std::filesystem::absolute(commandLine.caseDir()).lexically_normal().string()
+              << std::filesystem::absolute(definition.baseCase).lexically_normal().string()
               << ", " << definition.repeats << " run(s) each\n";
     if (commandLine.dryRun())
     {

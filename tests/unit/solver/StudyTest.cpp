@@ -240,6 +240,98 @@ TEST_CASE("sphStudy reports mistakes in studyDict at their place", "[study][erro
     }
 }
 
+namespace
+{
+
+// A study of ../dykaBar from a folder of its own, with a level combined with only one scheme.
+const char* baseCaseStudy = R"(
+baseCase "../dykaBar";
+common { solver ("endTime=2e-4" "writeInterval=1"); }
+axes
+{
+    scheme
+    {
+        TLnone  { solver ("formulation.type=totalLagrangian" "stabilisation.type=none"); }
+        ULgradF { solver ("formulation.type=updatedLagrangian" "stabilisation.type=gradF"); }
+    }
+    resolution
+    {
+        n20 { particles ("bar.n=20"); }
+        n40 { particles ("bar.n=40"); only { scheme (ULgradF); } }
+    }
+}
+threads 1;
+metrics { tipError { type exactSolution; functionObject tipError; } }
+rank no;
+)";
+
+} // namespace
+
+TEST_CASE("sphStudy runs a study of another case, levels combined only with some others",
+          "[study]")
+{
+    TempDir dir;
+    const fs::path base = copyTutorial("bar1D/dykaBar", dir.path());
+    const fs::path caseDir = dir.path() / "comparison";
+    fs::create_directories(caseDir / "system");
+    const auto writeStudy = [&](const std::string& wrong = "", const std::string& edit = "")
+    {
+        std::string text = baseCaseStudy;
+        if (!wrong.empty())
+        {
+            const auto at = text.find(wrong);
+            REQUIRE(at != std::string::npos);
+            text.replace(at, wrong.size(), edit);
+        }
+        std::ofstream(caseDir / "system" / "studyDict") << text;
+    };
+    writeStudy();
+    std::string output;
+    REQUIRE(runProcess("sphStudy", {"-case", caseDir.string()}, &output) == 0);
+    INFO(output);
+    CHECK_THAT(output, Catch::Contains("3 variants of " + base.string()));
+    const auto rows = readCsv(caseDir / "postProcessing" / "study" / "results.csv");
+    REQUIRE(rows.size() == 3);
+    std::vector<std::string> names;
+    for (const auto& row : rows)
+    {
+        names.push_back(row.at("variant"));
+        CHECK(row.at("status") == "finished");
+        CHECK(std::stod(row.at("particles")) == (row.at("resolution") == "n20" ? 20 : 40));
+    }
+    CHECK(names == std::vector<std::string>{"TLnone_n20", "ULgradF_n20", "ULgradF_n40"});
+    // The runs are copies of the base case, made in the study's folder; the base is untouched.
+    CHECK(fs::exists(caseDir / "postProcessing/study/runs/ULgradF_n40/system/controlDict"));
+    CHECK_FALSE(fs::exists(base / "postProcessing"));
+
+    // Mistakes in baseCase and only, reported at their place by -dryRun (exit code 1).
+    const auto dryRunWith = [&](const std::string& wrong, const std::string& edit)
+    {
+        writeStudy(wrong, edit);
+        std::string text;
+        CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &text) == 1);
+        CHECK_THAT(text, Catch::Contains("system/studyDict:"));
+        return text;
+    };
+    CHECK_THAT(dryRunWith("\"../dykaBar\"", "\"../dykaBra\""),
+               Catch::Contains("no case at '" + (dir.path() / "dykaBra").string() + "'"));
+    std::string text = dryRunWith("only { scheme", "only { schem");
+    CHECK_THAT(text, Catch::Contains("only: no axis 'schem'"));
+    CHECK_THAT(text, Catch::Contains("Did you mean 'scheme'?"));
+    text = dryRunWith("(ULgradF); }", "(ULgradf2); }");
+    CHECK_THAT(text, Catch::Contains("only: axis 'scheme' has no level 'ULgradf2'"));
+    CHECK_THAT(text, Catch::Contains("Levels: TLnone, ULgradF"));
+    CHECK_THAT(dryRunWith("only { scheme (ULgradF); }", "only { resolution (n20); }"),
+               Catch::Contains("only: 'resolution' is this level's own axis"));
+    CHECK_THAT(dryRunWith("ULgradF { solver", "ULgradF { only { resolution (n20); } solver"),
+               Catch::Contains("level 'n40' of axis 'resolution' is in no variant"));
+    CHECK_THAT(dryRunWith("tipError { type exactSolution; functionObject tipError; }",
+                          "drift { type referenceVariant; referenceLevels { resolution n40; } "
+                          "file postProcessing/energy/energy.dat; column drift; }"),
+               Catch::Contains("metric 'drift' compares TLnone_n20 with TLnone_n40, which is "
+                               "not a variant"));
+}
+
 TEST_CASE("sphStudy -listTypes lists the metric types with their keys", "[study]")
 {
     const std::vector<std::vector<std::string>> calls{{"-listTypes", "studyMetric"},
@@ -289,4 +381,39 @@ TEST_CASE("sphStudy -listTypes lists the metric types with their keys", "[study]
             }
         }
     }
+}
+
+TEST_CASE("the shipped studies read and list their variants", "[study]")
+{
+    // Every tutorial's system/studyDict, in place (-dryRun writes nothing).
+    const std::map<std::string, std::string> expected{
+        {"bar1D/schemeComparison", "22 variants of " +
+                                       (sourceDir() / "tutorials/bar1D/dykaBar").string()},
+        {"rings2D/schemeComparison",
+         "7 variants of " + (sourceDir() / "tutorials/rings2D/collidingRings").string()}};
+    std::size_t studies = 0;
+    for (auto it = fs::recursive_directory_iterator(sourceDir() / "tutorials");
+         it != fs::recursive_directory_iterator(); ++it)
+    {
+        if (it->path().filename() == "postProcessing")
+        {
+            it.disable_recursion_pending(); // the runs of a study made in the source tree
+            continue;
+        }
+        if (it->path().filename() != "studyDict")
+        {
+            continue;
+        }
+        const fs::path caseDir = it->path().parent_path().parent_path();
+        std::string output;
+        CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &output) == 0);
+        INFO(output);
+        const std::string name = fs::relative(caseDir, sourceDir() / "tutorials").string();
+        if (expected.count(name))
+        {
+            CHECK_THAT(output, Catch::Contains(expected.at(name)));
+        }
+        ++studies;
+    }
+    CHECK(studies >= 10);
 }
