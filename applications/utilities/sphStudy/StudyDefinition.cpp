@@ -1,4 +1,5 @@
 #include "StudyDefinition.hpp"
+#include "StudyMetric.hpp"
 
 #include "core/InputError.hpp"
 #include "core/Schema.hpp"
@@ -11,7 +12,6 @@ namespace sph
 
 namespace
 {
-
 
 Schema studySchema()
 {
@@ -27,8 +27,9 @@ Schema studySchema()
         .add(Key::integer("threads", "OpenMP threads per run (0: all cores)")
                  .min(0)
                  .defaultValue("0"))
-        .add(Key::dict("metrics", "error measures: name { type exactSolution | summary | "
-                                  "referenceVariant | referenceFile; ... }; the first is plotted"))
+        .add(Key::dict("metrics", "what each run is measured by: name { type exactSolution | "
+                                  "summary | referenceVariant | referenceFile; ... } (sphStudy "
+                                  "-listTypes studyMetric); the first is plotted"))
         .add(Key::dict("plot", "{ groupBy AXIS; along AXIS; }: one line per level of groupBy, "
                                "connecting the levels of along")
                  .optional())
@@ -37,7 +38,11 @@ Schema studySchema()
                  .optional())
         .add(Key::boolean("rank", "list the variants with the best first metric for their "
                                   "wall time (no for stability studies)")
-                 .defaultValue("yes"));
+                 .defaultValue("yes"))
+        .add(Key::string("baseCase", "the case each variant copies (its system/ and constant/), "
+                                     "relative to this one, e.g. \"../dykaBar\" (default: this "
+                                     "case)")
+                 .optional());
 }
 
 Schema levelSchema()
@@ -49,104 +54,132 @@ Schema levelSchema()
                  .defaultValue("()"));
 }
 
-Schema metricSchema()
+Schema restrictedLevelSchema()
 {
-    return Schema()
-        .add(Key::word("type", "how the error is measured")
-                 .choices({"exactSolution", "summary", "referenceVariant", "referenceFile"}))
-        .add(Key::word("functionObject", "exactSolution: the function object's name").optional())
-        .add(Key::string("value", "exactSolution: its result (default relativeLinfError); "
-                                  "summary: a path in summary.json, e.g. functions/energy/maxDrift")
-                 .optional())
-        .add(Key::string("file", "referenceVariant/referenceFile: a table of each variant, "
-                                 "relative to its case")
-                 .optional())
-        .add(Key::word("column", "the column of that table").optional())
-        .add(Key::word("variant", "referenceVariant: the variant to compare with").optional())
-        .add(Key::dict("referenceLevels", "referenceVariant: { axis level; ... }: compare each "
-                                          "variant with the one that differs only in these levels")
-                 .optional())
-        .add(Key::real("scale", "divide the difference by this instead of max |reference|")
-                 .positive()
-                 .optional())
-        .add(Key::string("reference", "referenceFile: the reference table, relative to the case")
-                 .optional())
-        .add(Key::string("referenceColumn", "referenceFile: its column (name or 1-based number)")
-                 .optional())
-        .add(Key::word("norm", "max or rms of the difference, relative to max |reference|")
-                 .choices({"max", "rms"})
-                 .defaultValue("max"));
+    return levelSchema().add(
+        Key::dict("only", "{ axis (level ...); ... }: combine this level only with these levels "
+                          "of other axes (default: with every level)")
+            .optional());
 }
 
-// The reference of a referenceVariant metric: one named variant, or levels that replace each
-// variant's own on some axes.
-void readReference(const Params& q, const StudyDefinition& study, StudyMetric& metric,
-                   const std::vector<std::string>& variantNames)
+// A level's `only { axis (level ...); ... }`: the levels of the other axes it is combined with.
+std::map<std::string, std::vector<std::string>>
+readOnly(const Dictionary& only, const std::vector<StudyAxis>& axes, const std::string& ownAxis)
 {
-    if (q.has("variant") == q.has("referenceLevels"))
+    std::vector<std::string> axisNames;
+    for (const auto& axis : axes)
     {
-        throw InputError(metric.where,
-                         "metric '" + metric.name +
-                             "' of type referenceVariant needs either 'variant' or "
-                             "'referenceLevels'",
-                         {"variant NAME; compares every variant with one; referenceLevels { axis "
-                          "level; } with the variant that differs only there."});
-    }
-    if (q.has("variant"))
-    {
-        metric.variant = q.word("variant");
-        if (std::find(variantNames.begin(), variantNames.end(), metric.variant) ==
-            variantNames.end())
+        if (axis.name != ownAxis)
         {
-            q.fail("variant", "metric '" + metric.name + "': no variant '" + metric.variant + "'",
-                   {"Variants are the level names joined by '_' in axis order, e.g. " +
-                        variantNames.front() + ".",
-                    didYouMean(metric.variant, variantNames)});
+            axisNames.push_back(axis.name);
         }
-        return;
     }
-    for (const Entry& entry : q.dict("referenceLevels").entries())
+    std::map<std::string, std::vector<std::string>> result;
+    for (const Entry& entry : only.entries())
     {
-        const auto axis = std::find_if(study.axes.begin(), study.axes.end(),
+        const auto axis = std::find_if(axes.begin(), axes.end(),
                                        [&](const StudyAxis& a) { return a.name == entry.key(); });
-        std::vector<std::string> names;
-        for (const auto& a : study.axes)
+        if (axis == axes.end() || axis->name == ownAxis)
         {
-            names.push_back(a.name);
+            throw InputError(entry.keyLocation(),
+                             axis == axes.end()
+                                 ? "only: no axis '" + entry.key() + "'"
+                                 : "only: '" + ownAxis + "' is this level's own axis",
+                             {"Other axes: " + joinSorted(axisNames),
+                              didYouMean(entry.key(), axisNames)});
         }
-        if (axis == study.axes.end())
+        const std::vector<Item>& value =
+            entry.items().size() == 1 && entry.items()[0].isList() ? entry.items()[0].items()
+                                                                   : entry.items();
+        if (entry.isDict() || value.empty())
         {
-            throw InputError(entry.keyLocation(), "referenceLevels: no axis '" + entry.key() + "'",
-                             {"Axes: " + joinSorted(names), didYouMean(entry.key(), names)});
+            throw InputError(entry.keyLocation(),
+                             "only: '" + entry.key() + "' needs the levels it may be combined with",
+                             {"e.g. only { " + entry.key() + " (" + axis->levels.front().name +
+                              "); }"});
         }
-        const std::string level =
-            entry.isDict() || entry.items().size() != 1 ? "" : entry.items()[0].text();
-        names.clear();
-        for (const auto& l : axis->levels)
+        std::vector<std::string> levelNames;
+        for (const auto& level : axis->levels)
         {
-            names.push_back(l.name);
+            levelNames.push_back(level.name);
         }
-        if (std::find(names.begin(), names.end(), level) == names.end())
+        for (const Item& item : value)
         {
-            throw InputError(entry.isDict() ? entry.keyLocation() : entry.valueLocation(),
-                             "referenceLevels: axis '" + entry.key() + "' has no level '" + level +
-                                 "'",
-                             {"Levels: " + joinSorted(names), didYouMean(level, names)});
+            if (item.kind() == Item::Kind::List ||
+                std::find(levelNames.begin(), levelNames.end(), item.text()) == levelNames.end())
+            {
+                throw InputError(item.location(),
+                                 "only: axis '" + entry.key() + "' has no level " +
+                                     (item.isList() ? item.describe() : "'" + item.text() + "'"),
+                                 {"Levels: " + joinSorted(levelNames),
+                                  didYouMean(item.text(), levelNames)});
+            }
+            result[entry.key()].push_back(item.text());
         }
-        metric.referenceLevels[entry.key()] = level;
+    }
+    return result;
+}
+
+// The `only` of every level (they may name axes defined after their own), then a check that
+// every level is still in some variant.
+void readRestrictions(const Dictionary& axesDict, StudyDefinition& study)
+{
+    std::size_t a = 0;
+    for (const Entry& axisEntry : axesDict.entries())
+    {
+        std::size_t l = 0;
+        for (const Entry& levelEntry : axisEntry.dict().entries())
+        {
+            if (const Entry* only = levelEntry.dict().find("only"); only && only->isDict())
+            {
+                study.axes[a].levels[l].only = readOnly(only->dict(), study.axes, axisEntry.key());
+            }
+            ++l;
+        }
+        ++a;
+    }
+    const auto variants = study.variants();
+    a = 0;
+    for (const Entry& axisEntry : axesDict.entries())
+    {
+        for (const Entry& levelEntry : axisEntry.dict().entries())
+        {
+            if (std::none_of(variants.begin(), variants.end(), [&](const StudyVariant& v)
+                             { return v.levels[a] == levelEntry.key(); }))
+            {
+                throw InputError(levelEntry.keyLocation(),
+                                 "level '" + levelEntry.key() + "' of axis '" + axisEntry.key() +
+                                     "' is in no variant",
+                                 {"The 'only' lists of the levels leave no combination with it."});
+            }
+        }
+        ++a;
     }
 }
 
 } // namespace
 
-StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
+StudyDefinition StudyDefinition::read(const Dictionary& studyDict,
+                                      const std::filesystem::path& caseDir)
 {
     const Params p = studySchema().validate(studyDict, "studyDict");
     StudyDefinition study;
+    study.baseCase = caseDir;
+    if (p.has("baseCase"))
+    {
+        study.baseCase = (caseDir / p.string("baseCase")).lexically_normal();
+        if (!std::filesystem::is_directory(study.baseCase / "system") ||
+            !std::filesystem::is_directory(study.baseCase / "constant"))
+        {
+            p.fail("baseCase", "no case at '" + study.baseCase.string() + "'",
+                   {"baseCase names a case folder (with system/ and constant/), relative to the "
+                    "study's folder, e.g. \"../dykaBar\"."});
+        }
+    }
     if (p.has("common"))
     {
         const Params q = levelSchema().validate(p.dict("common"), "common");
-        study.common = {"common", q.stringList("particles"), q.stringList("solver")};
+        study.common = {"common", q.stringList("particles"), q.stringList("solver"), {}};
     }
     study.repeats = p.integer("repeats");
     study.threads = p.integer("threads");
@@ -167,9 +200,10 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
                                  "level '" + levelEntry.key() + "' of axis '" + axis.name +
                                      "' must be a dictionary { particles (...); solver (...); }");
             }
-            const Params q = levelSchema().validate(levelEntry.dict(), "a study level");
+            const Params q =
+                restrictedLevelSchema().validate(levelEntry.dict(), "a study level");
             axis.levels.push_back(
-                {levelEntry.key(), q.stringList("particles"), q.stringList("solver")});
+                {levelEntry.key(), q.stringList("particles"), q.stringList("solver"), {}});
         }
         if (axis.levels.empty())
         {
@@ -181,67 +215,45 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
     {
         throw InputError(p.location("axes"), "studyDict: 'axes' defines no axis");
     }
-    std::vector<std::string> variantNames;
-    for (const auto& variant : study.variants())
-    {
-        variantNames.push_back(variant.name);
-    }
+    readRestrictions(p.dict("axes"), study);
     for (const Entry& entry : p.dict("metrics").entries())
     {
         if (!entry.isDict())
         {
             throw InputError(entry.keyLocation(),
-                             "metric '" + entry.key() + "' must be a dictionary { type ...; }");
+                             "metric '" + entry.key() + "' must be a dictionary { type ...; }",
+                             {"Metric types: " +
+                              joinSorted(Registry<StudyMetric>::names()) +
+                              " (sphStudy -listTypes studyMetric)"});
         }
-        const Params q = metricSchema().validate(entry.dict(), "a metric", 0, TypeEntry::isKey);
-        StudyMetric metric;
-        metric.name = entry.key();
-        metric.type = q.word("type");
-        metric.norm = q.word("norm");
-        metric.scale = q.has("scale") ? q.real("scale") : 0.0;
-        metric.where = entry.keyLocation();
-        const auto need = [&](const char* key)
-        {
-            if (!q.has(key))
-            {
-                throw InputError(entry.keyLocation(), "metric '" + metric.name + "' of type " +
-                                                          metric.type + " needs '" + key + "'");
-            }
-        };
-        if (metric.type == "exactSolution")
-        {
-            need("functionObject");
-            metric.value = "functions/" + q.word("functionObject") + "/" +
-                           (q.has("value") ? q.string("value") : "relativeLinfError");
-        }
-        else if (metric.type == "summary")
-        {
-            need("value");
-            metric.value = q.string("value");
-        }
-        else
-        {
-            need("file");
-            need("column");
-            metric.file = q.string("file");
-            metric.column = q.word("column");
-            if (metric.type == "referenceVariant")
-            {
-                readReference(q, study, metric, variantNames);
-            }
-            else
-            {
-                need("reference");
-                need("referenceColumn");
-                metric.reference = q.string("reference");
-                metric.referenceColumn = q.string("referenceColumn");
-            }
-        }
-        study.metrics.push_back(metric);
+        study.metrics.push_back(
+            selectModel<StudyMetric>(entry.dict(), {study, entry.key()}, 0));
     }
     if (study.metrics.empty())
     {
         throw InputError(p.location("metrics"), "studyDict: 'metrics' defines no metric");
+    }
+    // A reference variant that `only` leaves out could never be measured against.
+    std::vector<std::string> variantNames;
+    for (const auto& variant : study.variants())
+    {
+        variantNames.push_back(variant.name);
+    }
+    for (const auto& metric : study.metrics)
+    {
+        for (const auto& variant : study.variants())
+        {
+            const std::string reference = metric->referenceOf(variant);
+            if (!reference.empty() && std::find(variantNames.begin(), variantNames.end(),
+                                                reference) == variantNames.end())
+            {
+                throw InputError(p.dict("metrics").find(metric->name())->keyLocation(),
+                                 "metric '" + metric->name() + "' compares " + variant.name +
+                                     " with " + reference + ", which is not a variant",
+                                 {"The 'only' lists of the levels leave " + reference +
+                                  " out of the study; compare with a variant that is in it."});
+            }
+        }
     }
     std::vector<std::string> axisNames;
     for (const auto& axis : study.axes)
@@ -272,7 +284,7 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict)
         std::vector<std::string> metricNames;
         for (const auto& metric : study.metrics)
         {
-            metricNames.push_back(metric.name);
+            metricNames.push_back(metric->name());
         }
         for (const Entry& entry : p.dict("stable").entries())
         {
@@ -328,13 +340,47 @@ std::size_t StudyDefinition::axisIndex(const std::string& name) const
     return 0;
 }
 
+bool StudyDefinition::nextCombination(std::vector<std::size_t>& index) const
+{
+    for (std::size_t a = axes.size(); a-- > 0;)
+    {
+        if (++index[a] < axes[a].levels.size())
+        {
+            return true;
+        }
+        index[a] = 0;
+    }
+    return false;
+}
+
+bool StudyDefinition::allowed(const std::vector<std::size_t>& index) const
+{
+    for (std::size_t a = 0; a < axes.size(); ++a)
+    {
+        for (const auto& [axis, levels] : axes[a].levels[index[a]].only)
+        {
+            const std::size_t b = axisIndex(axis);
+            if (std::find(levels.begin(), levels.end(), axes[b].levels[index[b]].name) ==
+                levels.end())
+            {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
 std::vector<StudyVariant> StudyDefinition::variants() const
 {
     std::vector<StudyVariant> result;
     std::vector<std::size_t> index(axes.size(), 0); // an odometer over the levels
     bool done = false;
-    while (!done)
+    for (; !done; done = !nextCombination(index))
     {
+        if (!allowed(index))
+        {
+            continue;
+        }
         StudyVariant variant;
         variant.particles = common.particles;
         variant.solver = common.solver;
@@ -348,45 +394,16 @@ std::vector<StudyVariant> StudyDefinition::variants() const
             variant.solver.insert(variant.solver.end(), level.solver.begin(), level.solver.end());
         }
         result.push_back(variant);
-        done = true;
-        for (std::size_t a = axes.size(); a-- > 0;)
-        {
-            if (++index[a] < axes[a].levels.size())
-            {
-                done = false;
-                break;
-            }
-            index[a] = 0;
-        }
     }
     // Variants that others are compared with run first.
     std::stable_partition(result.begin(), result.end(),
                           [&](const StudyVariant& v)
                           {
                               return std::any_of(metrics.begin(), metrics.end(),
-                                                 [&](const StudyMetric& m) {
-                                                     return m.type == "referenceVariant" &&
-                                                            referenceOf(m, v) == v.name;
-                                                 });
+                                                 [&](const auto& m)
+                                                 { return m->referenceOf(v) == v.name; });
                           });
     return result;
-}
-
-std::string StudyDefinition::referenceOf(const StudyMetric& metric,
-                                         const StudyVariant& variant) const
-{
-    if (!metric.variant.empty())
-    {
-        return metric.variant;
-    }
-    std::string name;
-    for (std::size_t a = 0; a < axes.size(); ++a)
-    {
-        const auto level = metric.referenceLevels.find(axes[a].name);
-        name += (a ? "_" : "") +
-                (level != metric.referenceLevels.end() ? level->second : variant.levels[a]);
-    }
-    return name;
 }
 
 } // namespace sph

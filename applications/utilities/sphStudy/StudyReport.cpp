@@ -1,4 +1,5 @@
 #include "StudyReport.hpp"
+#include "StudyMetric.hpp"
 
 #include "core/Format.hpp"
 #include "io/AtomicFile.hpp"
@@ -126,7 +127,7 @@ void writePlots(const std::filesystem::path& studyDir, const StudyDefinition& st
 void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefinition& study,
                       const std::vector<VariantResult>& results)
 {
-    const std::string primary = study.metrics.front().name;
+    const std::string primary = study.metrics.front()->name();
 
     // results.csv
     std::ostringstream csv;
@@ -138,7 +139,7 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
     csv << ",status,particles,steps,wallSeconds,usPerParticleStep,peakMemoryMB";
     for (const auto& metric : study.metrics)
     {
-        csv << "," << metric.name;
+        csv << "," << metric->name();
     }
     csv << (study.stable.empty() ? "" : ",verdict") << ",failure\n";
     for (const auto& r : results)
@@ -153,7 +154,7 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
             << csvNumber(r.peakMemoryMB);
         for (const auto& metric : study.metrics)
         {
-            csv << "," << csvNumber(r.metrics.at(metric.name));
+            csv << "," << csvNumber(r.metrics.at(metric->name()));
         }
         if (!study.stable.empty())
         {
@@ -173,7 +174,7 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
     md << " status | particles | wall [s] | µs per particle-step | memory [MB] |";
     for (const auto& metric : study.metrics)
     {
-        md << " " << metric.name << " |";
+        md << " " << metric->name() << " |";
     }
     const bool verdicts = !study.stable.empty();
     md << (verdicts ? " verdict |" : "") << "\n| --- |";
@@ -194,7 +195,7 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
            << number(r.peakMemoryMB, 1) << " |";
         for (const auto& metric : study.metrics)
         {
-            md << " " << number(r.metrics.at(metric.name)) << " |";
+            md << " " << number(r.metrics.at(metric->name())) << " |";
         }
         md << (verdicts ? " " + verdictOf(study, r) + " |" : std::string()) << "\n";
     }
@@ -278,7 +279,7 @@ namespace
 void writePlots(const std::filesystem::path& studyDir, const StudyDefinition& study,
                 const std::vector<VariantResult>& results, std::size_t group)
 {
-    const std::string primary = study.metrics.front().name;
+    const std::string primary = study.metrics.front()->name();
     // Plot data: one line per level of groupBy and of the axes other than `along`, through the
     // levels of `along`.
     const std::size_t along = study.axisIndex(study.along);

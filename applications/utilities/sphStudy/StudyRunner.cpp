@@ -1,4 +1,5 @@
 #include "StudyRunner.hpp"
+#include "StudyMetric.hpp"
 
 #include "core/InputError.hpp"
 #include "io/AtomicFile.hpp"
@@ -98,120 +99,6 @@ double median(std::vector<double> values)
     return values[values.size() / 2];
 }
 
-// A gnuplot table: the columns by name (first: time).
-struct Table
-{
-    std::vector<std::string> names;
-    std::vector<std::vector<double>> columns;
-
-    static Table read(const std::filesystem::path& file)
-    {
-        std::ifstream in(file);
-        if (!in)
-        {
-            throw std::runtime_error("cannot read " + file.string());
-        }
-        Table table;
-        std::string line;
-        while (std::getline(in, line))
-        {
-            std::istringstream words(line);
-            if (line.rfind("#", 0) == 0)
-            {
-                std::string word;
-                words >> word;
-                while (words >> word)
-                {
-                    table.names.push_back(word);
-                }
-                continue;
-            }
-            std::vector<double> row;
-            double value;
-            while (words >> value)
-            {
-                row.push_back(value);
-            }
-            if (row.empty())
-            {
-                continue;
-            }
-            table.columns.resize(std::max(table.columns.size(), row.size()));
-            for (std::size_t c = 0; c < row.size(); ++c)
-            {
-                table.columns[c].push_back(row[c]);
-            }
-        }
-        return table;
-    }
-
-    // A column by name or 1-based number.
-    const std::vector<double>& column(const std::string& name) const
-    {
-        for (std::size_t c = 0; c < names.size() && c < columns.size(); ++c)
-        {
-            if (names[c] == name)
-            {
-                return columns[c];
-            }
-        }
-        char* end = nullptr;
-        const long number = std::strtol(name.c_str(), &end, 10);
-        if (end && *end == '\0' && number >= 1 &&
-            static_cast<std::size_t>(number) <= columns.size())
-        {
-            return columns[static_cast<std::size_t>(number - 1)];
-        }
-        throw std::runtime_error("no column '" + name + "'");
-    }
-};
-
-// max or rms of (value - reference interpolated at the value's times) over the common time
-// range, relative to `scale`, or to max |reference| when scale is 0.
-double difference(const std::vector<double>& time, const std::vector<double>& value,
-                  const std::vector<double>& referenceTime, const std::vector<double>& reference,
-                  const std::string& norm, double scale)
-{
-    if (scale <= 0.0)
-    {
-        for (double r : reference)
-        {
-            scale = std::max(scale, std::abs(r));
-        }
-    }
-    double worst = 0.0;
-    double squares = 0.0;
-    std::size_t count = 0;
-    std::size_t j = 0;
-    for (std::size_t i = 0; i < time.size() && i < value.size(); ++i)
-    {
-        const double t = time[i];
-        if (referenceTime.empty() || t < referenceTime.front() || t > referenceTime.back())
-        {
-            continue;
-        }
-        while (j + 1 < referenceTime.size() && referenceTime[j + 1] < t)
-        {
-            ++j;
-        }
-        double r = reference[j];
-        if (j + 1 < referenceTime.size() && referenceTime[j + 1] > referenceTime[j])
-        {
-            const double s = (t - referenceTime[j]) / (referenceTime[j + 1] - referenceTime[j]);
-            r = (1.0 - s) * reference[j] + s * reference[j + 1];
-        }
-        const double d = std::abs(value[i] - r);
-        worst = std::max(worst, d);
-        squares += d * d;
-        ++count;
-    }
-    if (count == 0 || scale == 0.0)
-    {
-        return notAvailable;
-    }
-    return (norm == "rms" ? std::sqrt(squares / static_cast<double>(count)) : worst) / scale;
-}
-
 } // namespace
 
 StudyRunner::StudyRunner(std::filesystem::path caseDir, const StudyDefinition& study,
@@ -247,7 +134,7 @@ std::vector<VariantResult> StudyRunner::run()
                  << " us/particle-step";
             for (const auto& metric : study_.metrics)
             {
-                line << ", " << metric.name << " " << result.metrics[metric.name];
+                line << ", " << metric->name() << " " << result.metrics[metric->name()];
             }
         }
         if (!result.failure.empty())
@@ -284,7 +171,7 @@ VariantResult StudyRunner::runVariant(const StudyVariant& variant)
     }
     std::error_code ec;
     std::filesystem::remove_all(dir, ec);
-    copyCase(caseDir_, dir);
+    copyCase(study_.baseCase, dir);
 
     std::vector<std::string> args{"-case", dir.string()};
     for (const auto& set : variant.particles)
@@ -362,43 +249,19 @@ VariantResult StudyRunner::runVariant(const StudyVariant& variant)
 
 void StudyRunner::computeMetrics(VariantResult& result) const
 {
-    const std::filesystem::path dir = variantDir(result.variant.name);
-    for (const StudyMetric& metric : study_.metrics)
+    const StudyRun run{result.variant, caseDir_, studyDir_ / "runs"};
+    for (const auto& metric : study_.metrics)
     {
         double value = notAvailable;
         try
         {
-            if (metric.type == "exactSolution" || metric.type == "summary")
-            {
-                pt::ptree tree;
-                pt::read_json((dir / "postProcessing" / "summary.json").string(), tree);
-                value = tree.get<double>(pt::ptree::path_type(metric.value, '/'));
-            }
-            else
-            {
-                const Table own = Table::read(dir / metric.file);
-                Table reference;
-                std::string referenceColumn = metric.column;
-                if (metric.type == "referenceVariant")
-                {
-                    reference = Table::read(variantDir(study_.referenceOf(metric, result.variant)) /
-                                            metric.file);
-                }
-                else
-                {
-                    reference = Table::read(caseDir_ / metric.reference);
-                    referenceColumn = metric.referenceColumn;
-                }
-                value = difference(own.columns.at(0), own.column(metric.column),
-                                   reference.columns.at(0), reference.column(referenceColumn),
-                                   metric.norm, metric.scale);
-            }
+            value = metric->evaluate(run);
         }
         catch (const std::exception&)
         {
             value = notAvailable; // e.g. a run that failed before writing its tables
         }
-        result.metrics[metric.name] = value;
+        result.metrics[metric->name()] = value;
     }
 }
 

@@ -3,6 +3,7 @@
 // and writes postProcessing/study/results.csv, results.md, errorVsTime.png and
 // errorVsParticles.png. An interrupted study resumes: finished variants are not run again
 // (delete postProcessing/study/runs/<variant> to run one again).
+#include "StudyMetric.hpp"
 #include "StudyReport.hpp"
 #include "StudyRunner.hpp"
 
@@ -10,6 +11,7 @@
 #include "core/CaseDictionaries.hpp"
 #include "core/CommandLine.hpp"
 #include "core/LibraryLoader.hpp"
+#include "solver/Applications.hpp"
 
 #include <iostream>
 
@@ -42,20 +44,31 @@ int study(int argc, char** argv)
         "summary.json value, a column against a reference variant (a fixed one, or the one that "
         "differs in given levels) or a reference file. An optional 'stable' dictionary of "
         "metric bounds adds a verdict per run. Finished variants are kept: an interrupted study "
-        "resumes. -dryRun lists the variants without running them. Keys: see the comment at the "
-        "top of applications/utilities/sphStudy/StudyDefinition.hpp and the README.");
-    commandLine.enableModelOptions(false, true, true);
+        "resumes. -dryRun lists the variants without running them; -listTypes the metric types "
+        "and their keys. Keys: see the comment at the top of "
+        "applications/utilities/sphStudy/StudyDefinition.hpp and the README.");
+    commandLine.enableModelOptions(true, true, true);
     if (!commandLine.parse(argc, argv))
     {
+        return 0;
+    }
+    if (commandLine.listTypes())
+    {
+        // The metrics are compiled into sphStudy: no model library to load.
+        sph::listTypes(std::cout,
+                       commandLine.listFamily().empty() ? sph::StudyMetric::family
+                                                        : commandLine.listFamily(),
+                       commandLine.listFamilyLocation());
         return 0;
     }
     sph::CaseDictionaries dicts(commandLine.caseDir());
     dicts.read({"studyDict"});
     dicts.applySets(commandLine.sets());
-    const sph::StudyDefinition definition = sph::StudyDefinition::read(dicts.get("studyDict"));
+    const sph::StudyDefinition definition =
+        sph::StudyDefinition::read(dicts.get("studyDict"), commandLine.caseDir());
     const auto variants = definition.variants();
     std::cout << "sphStudy " << sph::projectVersion() << ": " << variants.size() << " variants of "
-              << std::filesystem::absolute(commandLine.caseDir()).lexically_normal().string()
+              << std::filesystem::absolute(definition.baseCase).lexically_normal().string()
               << ", " << definition.repeats << " run(s) each\n";
     if (commandLine.dryRun())
     {

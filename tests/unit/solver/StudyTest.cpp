@@ -1,5 +1,5 @@
 // sphStudy end to end on a short Dyka bar: variants, metrics of every kind, references first,
-// resume, report files, and errors in studyDict.
+// resume, report files, errors in studyDict, and the metric types in -listTypes.
 #include "support/CaseRunner.hpp"
 
 #include <fstream>
@@ -44,6 +44,16 @@ metrics
         file    postProcessing/tipError/tipError.dat;
         column  u_numeric;
     }
+    // Against a hand-written table of zeros (no header): the largest |u| in mm.
+    largestTip
+    {
+        type            referenceFile;
+        file            postProcessing/tipError/tipError.dat;
+        column          u_numeric;
+        reference       "zeros.dat";
+        referenceColumn "2";            // a number in quotes: a string key
+        scale           1e-3;
+    }
 }
 plot { groupBy scheme; along resolution; }
 stable { selfConvergence { max 1e-3; } }    // only the reference resolution passes
@@ -83,6 +93,7 @@ TEST_CASE("sphStudy runs every variant, measures, reports and resumes", "[study]
     TempDir dir;
     const fs::path caseDir = copyTutorial("bar1D/dykaBar", dir.path());
     std::ofstream(caseDir / "system" / "studyDict") << studyDict;
+    std::ofstream(caseDir / "zeros.dat") << "0 0\n1 0\n";
 
     std::string output;
     REQUIRE(runProcess("sphStudy", {"-case", caseDir.string()}, &output) == 0);
@@ -122,6 +133,14 @@ TEST_CASE("sphStudy runs every variant, measures, reports and resumes", "[study]
             CHECK(self < 0.94);
         }
         CHECK((std::stod(row.at("againstOne")) == 0.0) == (row.at("variant") == "n40_TLnone"));
+        double largest = 0.0;
+        for (double u : readTable(study / "runs" / row.at("variant") /
+                                  "postProcessing/tipError/tipError.dat")
+                            .column("u_numeric"))
+        {
+            largest = std::max(largest, std::abs(u));
+        }
+        CHECK(std::stod(row.at("largestTip")) == Approx(largest / 1e-3).epsilon(1e-8));
         if (row.at("resolution") == "n40")
         {
             CHECK(row.at("verdict") == "\"pass\"");
@@ -190,6 +209,28 @@ TEST_CASE("sphStudy reports mistakes in studyDict at their place", "[study][erro
         CHECK_THAT(output, Catch::Contains("stable: 'selfConvergenc' must be one of the metrics"));
         CHECK_THAT(output, Catch::Contains("Did you mean 'selfConvergence'?"));
     }
+    SECTION("an unknown metric type")
+    {
+        const std::string output = dryRunWith("type summary;", "type sumary;");
+        CHECK_THAT(output, Catch::Contains("unknown studyMetric type 'sumary'"));
+        CHECK_THAT(output, Catch::Contains("Valid studyMetric types (4): exactSolution, "
+                                           "referenceFile, referenceVariant, summary"));
+        CHECK_THAT(output, Catch::Contains("Did you mean 'summary'?"));
+    }
+    SECTION("a key of another metric type")
+    {
+        const std::string output =
+            dryRunWith("functionObject tipError; }", "functionObject tipError; norm rms; }");
+        CHECK_THAT(output, Catch::Contains("unknown key 'norm' in 'metrics/tipError'"));
+        CHECK_THAT(output, Catch::Contains("exactSolution accepts: functionObject, type, value"));
+    }
+    SECTION("a metric without a key its type needs")
+    {
+        const std::string output = dryRunWith("reference       \"zeros.dat\";", "");
+        CHECK_THAT(output, Catch::Contains("missing required key 'reference' in "
+                                           "'metrics/largestTip'"));
+        CHECK_THAT(output, Catch::Contains("referenceFile needs:"));
+    }
     SECTION("a stability bound that is not a dictionary")
     {
         const std::string output = dryRunWith("stable { selfConvergence { max 1e-3; } }",
@@ -197,4 +238,182 @@ TEST_CASE("sphStudy reports mistakes in studyDict at their place", "[study][erro
         CHECK_THAT(output, Catch::Contains("system/studyDict:"));
         CHECK_THAT(output, Catch::Contains("the bounds of 'selfConvergence' must be a dictionary"));
     }
+}
+
+namespace
+{
+
+// A study of ../dykaBar from a folder of its own, with a level combined with only one scheme.
+const char* baseCaseStudy = R"(
+baseCase "../dykaBar";
+common { solver ("endTime=2e-4" "writeInterval=1"); }
+axes
+{
+    scheme
+    {
+        TLnone  { solver ("formulation.type=totalLagrangian" "stabilisation.type=none"); }
+        ULgradF { solver ("formulation.type=updatedLagrangian" "stabilisation.type=gradF"); }
+    }
+    resolution
+    {
+        n20 { particles ("bar.n=20"); }
+        n40 { particles ("bar.n=40"); only { scheme (ULgradF); } }
+    }
+}
+threads 1;
+metrics { tipError { type exactSolution; functionObject tipError; } }
+rank no;
+)";
+
+} // namespace
+
+TEST_CASE("sphStudy runs a study of another case, levels combined only with some others",
+          "[study]")
+{
+    TempDir dir;
+    const fs::path base = copyTutorial("bar1D/dykaBar", dir.path());
+    const fs::path caseDir = dir.path() / "comparison";
+    fs::create_directories(caseDir / "system");
+    const auto writeStudy = [&](const std::string& wrong = "", const std::string& edit = "")
+    {
+        std::string text = baseCaseStudy;
+        if (!wrong.empty())
+        {
+            const auto at = text.find(wrong);
+            REQUIRE(at != std::string::npos);
+            text.replace(at, wrong.size(), edit);
+        }
+        std::ofstream(caseDir / "system" / "studyDict") << text;
+    };
+    writeStudy();
+    std::string output;
+    REQUIRE(runProcess("sphStudy", {"-case", caseDir.string()}, &output) == 0);
+    INFO(output);
+    CHECK_THAT(output, Catch::Contains("3 variants of " + base.string()));
+    const auto rows = readCsv(caseDir / "postProcessing" / "study" / "results.csv");
+    REQUIRE(rows.size() == 3);
+    std::vector<std::string> names;
+    for (const auto& row : rows)
+    {
+        names.push_back(row.at("variant"));
+        CHECK(row.at("status") == "finished");
+        CHECK(std::stod(row.at("particles")) == (row.at("resolution") == "n20" ? 20 : 40));
+    }
+    CHECK(names == std::vector<std::string>{"TLnone_n20", "ULgradF_n20", "ULgradF_n40"});
+    // The runs are copies of the base case, made in the study's folder; the base is untouched.
+    CHECK(fs::exists(caseDir / "postProcessing/study/runs/ULgradF_n40/system/controlDict"));
+    CHECK_FALSE(fs::exists(base / "postProcessing"));
+
+    // Mistakes in baseCase and only, reported at their place by -dryRun (exit code 1).
+    const auto dryRunWith = [&](const std::string& wrong, const std::string& edit)
+    {
+        writeStudy(wrong, edit);
+        std::string text;
+        CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &text) == 1);
+        CHECK_THAT(text, Catch::Contains("system/studyDict:"));
+        return text;
+    };
+    CHECK_THAT(dryRunWith("\"../dykaBar\"", "\"../dykaBra\""),
+               Catch::Contains("no case at '" + (dir.path() / "dykaBra").string() + "'"));
+    std::string text = dryRunWith("only { scheme", "only { schem");
+    CHECK_THAT(text, Catch::Contains("only: no axis 'schem'"));
+    CHECK_THAT(text, Catch::Contains("Did you mean 'scheme'?"));
+    text = dryRunWith("(ULgradF); }", "(ULgradf2); }");
+    CHECK_THAT(text, Catch::Contains("only: axis 'scheme' has no level 'ULgradf2'"));
+    CHECK_THAT(text, Catch::Contains("Levels: TLnone, ULgradF"));
+    CHECK_THAT(dryRunWith("only { scheme (ULgradF); }", "only { resolution (n20); }"),
+               Catch::Contains("only: 'resolution' is this level's own axis"));
+    CHECK_THAT(dryRunWith("ULgradF { solver", "ULgradF { only { resolution (n20); } solver"),
+               Catch::Contains("level 'n40' of axis 'resolution' is in no variant"));
+    CHECK_THAT(dryRunWith("tipError { type exactSolution; functionObject tipError; }",
+                          "drift { type referenceVariant; referenceLevels { resolution n40; } "
+                          "file postProcessing/energy/energy.dat; column drift; }"),
+               Catch::Contains("metric 'drift' compares TLnone_n20 with TLnone_n40, which is "
+                               "not a variant"));
+}
+
+TEST_CASE("sphStudy -listTypes lists the metric types with their keys", "[study]")
+{
+    const std::vector<std::vector<std::string>> calls{{"-listTypes", "studyMetric"},
+                                                      {"-listTypes"}};
+    for (const auto& args : calls)
+    {
+        std::string output;
+        REQUIRE(runProcess("sphStudy", args, &output) == 0);
+        INFO(output);
+        CHECK_THAT(output, Catch::Contains("studyMetric (4 types)"));
+        // Each type, then its description, origin and keys (name, type, default or required).
+        const std::vector<std::pair<std::string, std::vector<std::string>>> types{
+            {"exactSolution", {"functionObject  (word, required)",
+                               "value  (string, default relativeLinfError)"}},
+            {"referenceFile", {"file  (string, required)", "column  (word, required)",
+                               "norm  (word, default max, one of: max rms)",
+                               "scale  (real, optional", "reference  (string, required)",
+                               "referenceColumn  (string, required)"}},
+            {"referenceVariant", {"file  (string, required)", "column  (word, required)",
+                                  "norm  (word, default max", "scale  (real, optional",
+                                  "variant  (word, optional)",
+                                  "referenceLevels  (dictionary, optional)"}},
+            {"summary", {"value  (string, required)"}}};
+        // The listing by type: "  name" starts an entry, its lines are indented further.
+        std::map<std::string, std::string> entries;
+        std::string current;
+        std::istringstream lines(output);
+        for (std::string line; std::getline(lines, line);)
+        {
+            if (line.size() > 2 && line.compare(0, 2, "  ") == 0 && line[2] != ' ')
+            {
+                current = line.substr(2);
+            }
+            else if (!current.empty())
+            {
+                entries[current] += line + "\n";
+            }
+        }
+        CHECK(entries.size() == types.size());
+        for (const auto& [type, keys] : types)
+        {
+            const std::string& entry = entries[type];
+            CHECK_THAT(entry, Catch::Contains("[sphStudy, any]"));
+            for (const auto& key : keys)
+            {
+                CHECK_THAT(entry, Catch::Contains("      " + key));
+            }
+        }
+    }
+}
+
+TEST_CASE("the shipped studies read and list their variants", "[study]")
+{
+    // Every tutorial's system/studyDict, in place (-dryRun writes nothing).
+    const std::map<std::string, std::string> expected{
+        {"bar1D/schemeComparison", "22 variants of " +
+                                       (sourceDir() / "tutorials/bar1D/dykaBar").string()},
+        {"rings2D/schemeComparison",
+         "7 variants of " + (sourceDir() / "tutorials/rings2D/collidingRings").string()}};
+    std::size_t studies = 0;
+    for (auto it = fs::recursive_directory_iterator(sourceDir() / "tutorials");
+         it != fs::recursive_directory_iterator(); ++it)
+    {
+        if (it->path().filename() == "postProcessing")
+        {
+            it.disable_recursion_pending(); // the runs of a study made in the source tree
+            continue;
+        }
+        if (it->path().filename() != "studyDict")
+        {
+            continue;
+        }
+        const fs::path caseDir = it->path().parent_path().parent_path();
+        std::string output;
+        CHECK(runProcess("sphStudy", {"-case", caseDir.string(), "-dryRun"}, &output) == 0);
+        INFO(output);
+        const std::string name = fs::relative(caseDir, sourceDir() / "tutorials").string();
+        if (expected.count(name))
+        {
+            CHECK_THAT(output, Catch::Contains(expected.at(name)));
+        }
+        ++studies;
+    }
+    CHECK(studies >= 10);
 }

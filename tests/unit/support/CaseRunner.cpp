@@ -101,56 +101,9 @@ double summaryValue(const std::filesystem::path& caseDir, const std::string& pat
     return *value;
 }
 
-std::vector<double> Table::column(const std::string& name) const
-{
-    std::size_t index = 0;
-    if (name != "time")
-    {
-        const auto it = std::find(columns.begin(), columns.end(), name);
-        REQUIRE(it != columns.end());
-        index = static_cast<std::size_t>(it - columns.begin()) + 1;
-    }
-    std::vector<double> values;
-    for (const auto& row : rows)
-    {
-        values.push_back(row.at(index));
-    }
-    return values;
-}
-
 Table readTable(const std::filesystem::path& file)
 {
-    std::ifstream in(file);
-    REQUIRE(in);
-    Table table;
-    std::string line;
-    while (std::getline(in, line))
-    {
-        if (line.empty())
-        {
-            continue;
-        }
-        std::istringstream words(line);
-        if (line[0] == '#')
-        {
-            std::string word;
-            words >> word; // '#'
-            words >> word; // time
-            while (words >> word)
-            {
-                table.columns.push_back(word);
-            }
-            continue;
-        }
-        std::vector<double> row;
-        double value;
-        while (words >> value)
-        {
-            row.push_back(value);
-        }
-        table.rows.push_back(row);
-    }
-    return table;
+    return readDatTable(file);
 }
 
 void setEntry(const std::filesystem::path& file, const std::string& key, const std::string& value)

@@ -4,6 +4,8 @@
 
 #include "support/TestSupport.hpp"
 
+#include "io/DatTable.hpp"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -25,13 +27,8 @@ int runSolver(const std::filesystem::path& caseDir, const std::vector<std::strin
 int runProcess(const std::string& app, const std::vector<std::string>& args,
                std::string* output = nullptr);
 
-// A gnuplot table written by a function object.
-struct Table
-{
-    std::vector<std::string> columns; // without "time"
-    std::vector<std::vector<double>> rows;
-    std::vector<double> column(const std::string& name) const; // "time" or a column name
-};
+// A table written by a function object: column("time"), column("drift"), ... (io/DatTable).
+using Table = DatTable;
 Table readTable(const std::filesystem::path& file);
 
 // A number from the run's postProcessing/summary.json, by path: "functions/energy/maxDrift".

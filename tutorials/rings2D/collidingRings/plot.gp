@@ -1,4 +1,5 @@
-# Plots of the colliding rings (run by Allrun).
+# Plots of the colliding rings (run by Allrun; ../schemeComparison/Allrun runs it in the folder of
+# each of its runs for snapshots-<variant>.png).
 set terminal pngcairo size 1000,600 font "Sans,11"
 set datafile commentschars "#"
 set grid
