@@ -11,7 +11,7 @@
 #include "core/CaseDictionaries.hpp"
 #include "core/CommandLine.hpp"
 #include "core/LibraryLoader.hpp"
-#include "solver/Applications.hpp"
+#include "core/ModelListing.hpp"
 
 #include <iostream>
 
