@@ -68,20 +68,22 @@ private:
 
     using FunctionState = std::map<std::string, double>; // "fo:<name>:<key>" -> value
 
-    // Simulation.cpp: the time loop and its phases
+    // Simulation.cpp: the time loop and its phases (reads -> writes)
     void advance(RunLog& log, bool restarted);
-    bool moveReference(long firstStep);
-    bool energyWanted(long firstStep) const;
-    ForceStatus computeForces(bool atReference, bool wantEnergy);
-    void accelerate();
-    void chooseTimeStep(bool freshStart);
-    FunctionState functionObjectState() const;
-    void observe(RunLog& log, double dt, double strainEnergy, bool wantEnergy, bool progress,
-                 long firstStep);
-    void writeLevel(RunLog& log, const FunctionState& functionState);
-    void drift(double dt);
-    void applyContact(double dt);
-    void checkOrder(double dt);
+    bool moveReference(long firstStep);           // x^n -> the reference configuration
+    bool energyWanted(long firstStep) const;      // the function objects' needs -> bool
+    ForceStatus computeForces(bool atReference,   // x^n, reference -> T (in acceleration_),
+                              bool wantEnergy);   //   F^n, P^n, Π^n
+    void accelerate();                            // T, m, g, fixed -> a^n (in place)
+    void chooseTimeStep(bool freshStart);         // F^n -> the integrator's Δt_n
+    FunctionState functionObjectState() const;    // function objects -> their restart state
+    void observe(RunLog& log, double dt,          // v, a^n, Π^n -> v^n, energy balance,
+                 double strainEnergy, bool wantEnergy,  // function objects, progress line
+                 bool progress, long firstStep);
+    void writeLevel(RunLog& log, const FunctionState& functionState); // registries -> VTK/
+    void drift(double dt);                        // x^n, v, a^n -> x^{n+1}, v^{n+1/2}; W_g
+    void applyContact(double dt);                 // x^{n+1}, F(x^{n+1}) -> Δv, W_contact
+    void checkOrder(double dt);                   // 1D: x^{n+1} -> failure if out of order
     WaveSpeedBound waveSpeedBound() const;
     [[noreturn]] void fail(const ForceStatus& status, const std::string& when);
     long crossingParticle() const;
