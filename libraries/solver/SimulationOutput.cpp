@@ -7,8 +7,7 @@
 #include "io/AtomicFile.hpp"
 #include "io/VtuFile.hpp"
 
-#include <boost/property_tree/json_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
+#include <nlohmann/json.hpp>
 
 #include <omp.h>
 
@@ -43,42 +42,45 @@ long outputIndexOf(const std::string& fileName, const std::string& caseName)
 
 } // namespace
 
+// Typed JSON (numbers as numbers), so that e.g. jq '.functions.energy.maxDrift < 1e-3' works;
+// a non-finite result is written as null.
 template <int D>
 void Simulation<D>::writeSummary(const RunSummary& summary, const std::string& failure) const
 {
-    boost::property_tree::ptree tree;
-    tree.put("case", caseName_);
-    tree.put("dimension", D);
-    tree.put("particles", particles_.size());
-    tree.put("spacing", spacing_);
-    tree.put("kernel", kernel_->name());
-    tree.put("hOverDx", kernel_->hOverDx());
-    tree.put("formulation", formulation_->summary());
-    tree.put("stabilisation", scheme_->summary());
-    tree.put("contact", contact_->summary());
-    tree.put("courant", control_.courant);
-    tree.put("status", failure.empty() ? "finished" : "failed");
-    tree.put("failure", failure);
-    tree.put("endTime", control_.endTime);
-    tree.put("time", time_);
-    tree.put("steps", summary.steps);
-    tree.put("threads", omp_get_max_threads());
-    tree.put("wallSeconds", summary.wallSeconds);
-    tree.put("particleStepsPerSecond", summary.particleStepsPerSecond);
-    tree.put("outputSeconds", summary.outputSeconds);
-    tree.put("computeParticleStepsPerSecond", summary.computeParticleStepsPerSecond);
-    tree.put("peakMemoryMB", summary.peakMemoryMB);
+    nlohmann::ordered_json json;
+    json["case"] = caseName_;
+    json["dimension"] = D;
+    json["particles"] = particles_.size();
+    json["spacing"] = spacing_;
+    json["kernel"] = kernel_->name();
+    json["hOverDx"] = kernel_->hOverDx();
+    json["formulation"] = formulation_->summary();
+    json["stabilisation"] = scheme_->summary();
+    json["contact"] = contact_->summary();
+    json["timeIntegration"] = integrator_->summary();
+    json["courant"] = control_.courant;
+    json["status"] = failure.empty() ? "finished" : "failed";
+    json["failure"] = failure;
+    json["endTime"] = control_.endTime;
+    json["time"] = time_;
+    json["steps"] = summary.steps;
+    json["threads"] = omp_get_max_threads();
+    json["wallSeconds"] = summary.wallSeconds;
+    json["particleStepsPerSecond"] = summary.particleStepsPerSecond;
+    json["outputSeconds"] = summary.outputSeconds;
+    json["computeParticleStepsPerSecond"] = summary.computeParticleStepsPerSecond;
+    json["peakMemoryMB"] = summary.peakMemoryMB;
+    json["functions"] = nlohmann::ordered_json::object();
     for (const auto& object : functionObjects_)
     {
+        auto& results = json["functions"][object->name()];
+        results = nlohmann::ordered_json::object();
         for (const auto& [key, value] : object->results())
         {
-            tree.put(boost::property_tree::ptree::path_type("functions/" + object->name() + "/" + key, '/'),
-                     value);
+            results[key] = value;
         }
     }
-    std::ostringstream text;
-    boost::property_tree::write_json(text, tree);
-    writeTextAtomically(dicts_.caseDir() / "postProcessing" / "summary.json", text.str());
+    writeTextAtomically(dicts_.caseDir() / "postProcessing" / "summary.json", json.dump(4) + "\n");
 }
 
 template <int D>

@@ -4,8 +4,7 @@
 #include "core/InputError.hpp"
 #include "io/AtomicFile.hpp"
 
-#include <boost/property_tree/json_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
+#include <nlohmann/json.hpp>
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -22,7 +21,6 @@
 
 extern char** environ;
 
-namespace pt = boost::property_tree;
 
 namespace sph
 {
@@ -157,15 +155,20 @@ VariantResult StudyRunner::runVariant(const StudyVariant& variant)
     const std::filesystem::path record = dir / "study.json";
     if (std::filesystem::exists(record))
     {
-        pt::ptree tree;
-        pt::read_json(record.string(), tree);
-        result.status = tree.get<std::string>("status");
-        result.failure = tree.get<std::string>("failure", "");
-        result.particles = tree.get<double>("particles", 0.0);
-        result.steps = tree.get<double>("steps", 0.0);
-        result.wallSeconds = tree.get<double>("wallSeconds", notAvailable);
-        result.usPerParticleStep = tree.get<double>("usPerParticleStep", notAvailable);
-        result.peakMemoryMB = tree.get<double>("peakMemoryMB", notAvailable);
+        std::ifstream in(record);
+        const nlohmann::json json = nlohmann::json::parse(in);
+        // A number, or `otherwise` when absent or null (not available).
+        const auto number = [&json](const char* key, double otherwise) {
+            return json.contains(key) && json.at(key).is_number() ? json.at(key).get<double>()
+                                                                  : otherwise;
+        };
+        result.status = json.at("status").get<std::string>();
+        result.failure = json.value("failure", "");
+        result.particles = number("particles", 0.0);
+        result.steps = number("steps", 0.0);
+        result.wallSeconds = number("wallSeconds", notAvailable);
+        result.usPerParticleStep = number("usPerParticleStep", notAvailable);
+        result.peakMemoryMB = number("peakMemoryMB", notAvailable);
         result.reused = true;
         return result;
     }
@@ -209,15 +212,16 @@ VariantResult StudyRunner::runVariant(const StudyVariant& variant)
                 result.failure = "input error: " + firstError(dir / "log.sphSolid");
                 break;
             }
-            pt::ptree tree;
-            pt::read_json(summary.string(), tree);
-            result.status = tree.get<std::string>("status");
-            result.failure = tree.get<std::string>("failure", "");
-            result.particles = tree.get<double>("particles");
-            result.steps = tree.get<double>("steps");
-            result.peakMemoryMB = std::max(result.peakMemoryMB, tree.get<double>("peakMemoryMB"));
-            walls.push_back(tree.get<double>("wallSeconds"));
-            rates.push_back(tree.get<double>("computeParticleStepsPerSecond"));
+            std::ifstream in(summary);
+            const nlohmann::json json = nlohmann::json::parse(in);
+            result.status = json.at("status").get<std::string>();
+            result.failure = json.value("failure", "");
+            result.particles = json.at("particles").get<double>();
+            result.steps = json.at("steps").get<double>();
+            result.peakMemoryMB =
+                std::max(result.peakMemoryMB, json.at("peakMemoryMB").get<double>());
+            walls.push_back(json.at("wallSeconds").get<double>());
+            rates.push_back(json.at("computeParticleStepsPerSecond").get<double>());
             if (result.status != "finished")
             {
                 break; // a failure repeats itself
@@ -232,18 +236,16 @@ VariantResult StudyRunner::runVariant(const StudyVariant& variant)
             result.failure.resize(newline);
         }
     }
-    pt::ptree tree;
-    tree.put("variant", variant.name);
-    tree.put("status", result.status);
-    tree.put("failure", result.failure);
-    tree.put("particles", result.particles);
-    tree.put("steps", result.steps);
-    tree.put("wallSeconds", result.wallSeconds);
-    tree.put("usPerParticleStep", result.usPerParticleStep);
-    tree.put("peakMemoryMB", result.peakMemoryMB);
-    std::ostringstream text;
-    pt::write_json(text, tree);
-    writeTextAtomically(record, text.str());
+    nlohmann::ordered_json json; // typed: numbers as numbers, not available as null
+    json["variant"] = variant.name;
+    json["status"] = result.status;
+    json["failure"] = result.failure;
+    json["particles"] = result.particles;
+    json["steps"] = result.steps;
+    json["wallSeconds"] = result.wallSeconds;
+    json["usPerParticleStep"] = result.usPerParticleStep;
+    json["peakMemoryMB"] = result.peakMemoryMB;
+    writeTextAtomically(record, json.dump(4) + "\n");
     return result;
 }
 

@@ -9,7 +9,10 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <nlohmann/json.hpp>
+
 #include <chrono>
+#include <fstream>
 #include <sstream>
 #include <thread>
 
@@ -79,6 +82,14 @@ TEST_CASE("output reads back with VTK's reader: arrays, sizes, TimeValue", "[out
         CHECK(data.stringFields.at("bodyNames") == std::vector<std::string>{"bar"});
     }
     CHECK(previous >= 1e-3);
+    // summary.json is typed JSON: numbers are numbers (jq '.steps > 0' must work).
+    std::ifstream summaryFile(caseDir / "postProcessing" / "summary.json");
+    const nlohmann::json summary = nlohmann::json::parse(summaryFile);
+    CHECK(summary.at("steps").is_number_integer());
+    CHECK(summary.at("particles").get<int>() == 40);
+    CHECK(summary.at("status") == "finished");
+    CHECK(summary.at("functions").at("energy").at("maxDrift").is_number());
+    CHECK(summary.at("functions").at("energy").at("maxDrift").get<double>() < 1e-3);
     // The free end moved and the fixed end did not.
     const VtuData last = readVtu(caseDir / "VTK" / series.entries().back().file);
     CHECK(last.pointData.at("displacement").values.at(0) == 0.0);

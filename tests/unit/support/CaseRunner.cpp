@@ -3,8 +3,7 @@
 #include "sphParticles/ParticlesApplication.hpp"
 #include "sphSolid/SolidApplication.hpp"
 
-#include <boost/property_tree/json_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
+#include <nlohmann/json.hpp>
 
 #include <spawn.h>
 #include <sys/wait.h>
@@ -92,13 +91,13 @@ int runProcess(const std::string& app, const std::vector<std::string>& args, std
 
 double summaryValue(const std::filesystem::path& caseDir, const std::string& path)
 {
-    namespace pt = boost::property_tree;
-    pt::ptree tree;
-    pt::read_json((caseDir / "postProcessing" / "summary.json").string(), tree);
-    const auto value = tree.get_optional<double>(pt::ptree::path_type(path, '/'));
+    std::ifstream in(caseDir / "postProcessing" / "summary.json");
+    const nlohmann::json json = nlohmann::json::parse(in);
+    const nlohmann::json::json_pointer pointer("/" + path);
     INFO("summary.json has no number at " << path);
-    REQUIRE(value.has_value());
-    return *value;
+    REQUIRE(json.contains(pointer));
+    REQUIRE(json.at(pointer).is_number());
+    return json.at(pointer).get<double>();
 }
 
 Table readTable(const std::filesystem::path& file)
