@@ -4,13 +4,21 @@
 // the interval (every level when the interval is 0), with a tolerance of 1e-6 of the step for
 // the round-off in the accumulated time.
 
+#include "Format.hpp"
+#include "InputError.hpp"
+#include "SourceLocation.hpp"
+
 namespace sph
 {
 
 class WriteSchedule
 {
 public:
-    explicit WriteSchedule(double interval = 0.0) : interval_(interval) {}
+    // `where`: the interval's entry in the case, for the error of checkStep().
+    explicit WriteSchedule(double interval = 0.0, SourceLocation where = {})
+        : interval_(interval), where_(std::move(where))
+    {
+    }
 
     bool due(double time, double deltaT) const
     {
@@ -19,12 +27,36 @@ public:
     // After a write at `time`: the next multiple of the interval after it.
     void written(double time, double deltaT)
     {
-        if (interval_ > 0.0)
+        if (interval_ <= 0.0)
         {
-            while (next_ <= time + 1e-6 * deltaT)
+            return;
+        }
+        // Bounded: an interval far below the step (or below the resolution of the time) must
+        // not loop for ever; checkStep() reports it as an input error first.
+        for (int passes = 0; next_ <= time + 1e-6 * deltaT; ++passes)
+        {
+            if (passes == 1000000 || next_ + interval_ == next_)
             {
-                next_ += interval_;
+                next_ = time + interval_;
+                break;
             }
+            next_ += interval_;
+        }
+    }
+    // An interval shorter than the time step asks for more than one write per step: an input
+    // error at the interval's entry (checked once Δt is known).
+    void checkStep(double deltaT, const std::string& key = "writeInterval") const
+    {
+        if (interval_ > 0.0 && deltaT > 0.0 && interval_ < deltaT)
+        {
+            throw InputError(where_,
+                             key + " " + formatNumber(interval_) +
+                                 " s is shorter than the time step " + formatNumber(deltaT) +
+                                 " s: that would be more than one output per step",
+                             {"Outputs are written at most once per step: give an interval of "
+                              "at least the time step (function objects: 0 writes every step).",
+                              "The time step is courant h / c, c the largest wave speed of the "
+                              "materials: check E and rho if it is not what you expect."});
         }
     }
     void restart() { next_ = 0.0; }
@@ -35,6 +67,7 @@ public:
 
 private:
     double interval_;
+    SourceLocation where_;
     double next_ = 0.0;
 };
 

@@ -46,7 +46,8 @@ public:
 
 protected:
     FunctionObjectModel(const Params& params, const typename FunctionObject<D>::Args& args)
-        : FunctionObject<D>(args.name), schedule_(params.real("writeInterval")),
+        : FunctionObject<D>(args.name),
+          schedule_(params.real("writeInterval"), params.location("writeInterval")),
           folder_(args.caseDir / "postProcessing" / args.name)
     {
     }
@@ -62,6 +63,11 @@ protected:
     void writeRow(double time, double deltaT, const std::vector<double>& values)
     {
         file_->write(time, values);
+        if (!stepChecked_ && deltaT > 0.0)
+        {
+            schedule_.checkStep(deltaT);
+            stepChecked_ = true;
+        }
         schedule_.written(time, deltaT);
     }
     double interval() const { return schedule_.interval(); }
@@ -69,6 +75,7 @@ protected:
 
 private:
     WriteSchedule schedule_;
+    bool stepChecked_ = false; // the interval against the first step (checkStep)
     std::filesystem::path folder_;
     std::unique_ptr<DatFile> file_;
 };

@@ -58,7 +58,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         const ForceStatus forces = computeForces(atReference, wantEnergy);
         accelerate();
         audit_.completeContactWork(particles_.m, contactDeltaV_, acceleration_);
-        chooseTimeStep(step_ == firstStep && !restarted);
+        chooseTimeStep(step_ == firstStep && !restarted, step_ == firstStep);
         // The run ends at the first level at or after endTime (no shortened last step: a run
         // stopped early follows the same trajectory, so restarts continue bit-identically).
         const bool last = time_ >= control_.endTime * (1.0 - 1e-12) ||
@@ -170,12 +170,16 @@ void Simulation<D>::accelerate()
 }
 
 template <int D>
-void Simulation<D>::chooseTimeStep(bool freshStart)
+void Simulation<D>::chooseTimeStep(bool freshStart, bool firstLevel)
 {
     const ForceStatus status = integrator_->chooseTimeStep(step_, freshStart, waveSpeedBound());
     if (!status.ok())
     {
         fail(status, "computing the time step");
+    }
+    if (firstLevel)
+    {
+        checkRunLength(integrator_->deltaT());
     }
 }
 

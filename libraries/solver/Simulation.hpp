@@ -75,7 +75,9 @@ private:
     ForceStatus computeForces(bool atReference,   // x^n, reference -> T (in acceleration_),
                               bool wantEnergy);   //   F^n, P^n, Π^n
     void accelerate();                            // T, m, g, fixed -> a^n (in place)
-    void chooseTimeStep(bool freshStart);         // F^n -> the integrator's Δt_n
+    void chooseTimeStep(bool freshStart,          // F^n -> the integrator's Δt_n
+                        bool firstLevel);
+    void checkRunLength(double deltaT) const;     // Δt_0 against endTime and writeInterval
     FunctionState functionObjectState() const;    // function objects -> their restart state
     void observe(RunLog& log, double dt,          // v, a^n, Π^n -> v^n, energy balance,
                  double strainEnergy, bool wantEnergy,  // function objects, progress line

@@ -3,6 +3,8 @@
 #include "solver/Simulation.hpp"
 
 #include "core/Application.hpp"
+#include "core/Format.hpp"
+#include "core/InputError.hpp"
 #include "particles/Parallel.hpp"
 
 #include <sstream>
@@ -59,6 +61,24 @@ WaveSpeedBound Simulation<D>::waveSpeedBound() const
         return fastest;
     };
     return {kernel_->h(), [fastestBody] { return fastestBody().first; }, fastestParticle};
+}
+
+// A run that would take more than 1e12 steps, or write more than once per step, is an input
+// error (such values otherwise run for ever with no output).
+template <int D>
+void Simulation<D>::checkRunLength(double deltaT) const
+{
+    outputSchedule_.checkStep(deltaT);
+    const double steps = (control_.endTime - time_) / deltaT;
+    if (steps > 1e12)
+    {
+        throw InputError(dicts_.get("controlDict").find("endTime")->valueLocation(),
+                         "the run to endTime " + formatNumber(control_.endTime) +
+                             " s would take " + formatNumber(steps) + " steps of " +
+                             formatNumber(deltaT) + " s",
+                         {"The time step is courant h / c, c the largest wave speed of the "
+                          "materials: check endTime, E and rho."});
+    }
 }
 
 template <int D>

@@ -57,7 +57,9 @@ template <int D>
 Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& control,
                           const SchemeSettings& schemes, const InitialParticles& initial)
     : dicts_(dicts), control_(control), caseName_(dicts.caseName()),
-      outputSchedule_(control.writeInterval), pvd_(dicts.caseDir() / "VTK" / (dicts.caseName() + ".pvd"))
+      outputSchedule_(control.writeInterval,
+                      dicts.get("controlDict").find("writeInterval")->valueLocation()),
+      pvd_(dicts.caseDir() / "VTK" / (dicts.caseName() + ".pvd"))
 {
     if (initial.dimension != D)
     {

@@ -32,7 +32,8 @@ public:
     }
 
     Snapshot(const Params& params, const typename FunctionObject<D>::Args& args)
-        : FunctionObject<D>(args.name), schedule_(params.real("writeInterval")),
+        : FunctionObject<D>(args.name),
+          schedule_(params.real("writeInterval"), params.location("writeInterval")),
           fields_(params.wordList("fields")), folder_(args.caseDir / "postProcessing" / args.name)
     {
         static const std::vector<std::string> known{"displacement", "velocity", "F", "P", "J",
@@ -62,6 +63,7 @@ public:
         {
             return;
         }
+        schedule_.checkStep(state.deltaT);
         schedule_.written(state.time, state.deltaT);
         static const char* axes[3] = {"x", "y", "z"};
         std::ostringstream out;
