@@ -133,12 +133,4 @@ std::pair<double, double> stretchSquaredRange(const Mat<D>& F)
     }
 }
 
-// Lamé constants from Young's modulus and Poisson's ratio (3D / plane strain).
-inline std::pair<double, double> lameFromYoung(double E, double nu)
-{
-    const double mu = E / (2.0 * (1.0 + nu));
-    const double lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-    return {lambda, mu};
-}
-
 } // namespace sph
