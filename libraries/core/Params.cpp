@@ -3,6 +3,7 @@
 #include "Schema.hpp"
 #include "Suggest.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace sph
@@ -81,6 +82,36 @@ const std::vector<std::vector<double>>& Params::vectorList(std::string_view key)
 const Dictionary& Params::dict(std::string_view key) const
 {
     return *get(key, ValueType::Dict).dict;
+}
+
+std::size_t Params::bodyIndex(std::string_view key) const
+{
+    return bodyIndices(key).front();
+}
+
+std::vector<std::size_t> Params::bodyIndices(std::string_view key) const
+{
+    const auto value = std::find_if(values_.begin(), values_.end(),
+                                    [&](const Value& v) { return v.key.name() == key; });
+    if (value == values_.end() || !value->key.namesBodies() || context_.bodies.empty())
+    {
+        throw std::logic_error("model '" + context_.label + "' reads key '" + std::string(key) +
+                               "' as body names, but " +
+                               (value == values_.end() || !value->key.namesBodies()
+                                    ? "did not declare it with Key::body or Key::bodyList"
+                                    : "the case's bodies were not given to the validation"));
+    }
+    const Value& read = get(key, value->key.type()); // checks that it has a value
+    const std::vector<std::string> names =
+        read.key.type() == ValueType::Word ? std::vector<std::string>{read.text} : read.words;
+    std::vector<std::size_t> result;
+    for (const std::string& name : names)
+    {
+        // Validation checked every name against these bodies.
+        const auto it = std::find(context_.bodies.begin(), context_.bodies.end(), name);
+        result.push_back(static_cast<std::size_t>(it - context_.bodies.begin()));
+    }
+    return result;
 }
 
 bool Params::has(std::string_view key) const

@@ -162,8 +162,19 @@ InputError unknownModelError(const std::string& family, const std::string& name,
 // What a selector may add to the plain `type NAME;` selection.
 struct Selection
 {
+    Selection(std::string type = {}, Schema keys = {}, std::vector<std::string> names = {})
+        : defaultType(std::move(type)), extraKeys(std::move(keys)), bodies(std::move(names))
+    {
+    }
+    // Only the case's bodies: selectModel<Contact<D>>(dict, args, D, Selection::withBodies(b)).
+    static Selection withBodies(std::vector<std::string> names)
+    {
+        return {{}, {}, std::move(names)};
+    }
+
     std::string defaultType; // used when `type` is absent (empty: `type` is required)
     Schema extraKeys;        // keys the caller reads from the same dictionary (e.g. `region`)
+    std::vector<std::string> bodies; // the case's bodies, checked by Key::body (empty: unknown)
 };
 
 // Reads `type` from `dict`, finds the model, validates `dict` against its schema and builds it.
@@ -199,7 +210,11 @@ std::unique_ptr<Base> selectModel(const Dictionary& dict, const typename Base::A
     }
     Schema schema = record->schema();
     schema.include(selection.extraKeys);
-    return Registry<Base>::create(name, schema.validate(dict, name, dimension), args);
+    ValidationContext context;
+    context.dimension = dimension;
+    context.label = name;
+    context.bodies = selection.bodies;
+    return Registry<Base>::create(name, schema.validate(dict, context), args);
 }
 
 // Validates `dict` against model `name` and builds it (for code and tests that know the name).

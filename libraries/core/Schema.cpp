@@ -94,6 +94,27 @@ Key Key::dict(std::string name, std::string doc)
 {
     return {std::move(name), ValueType::Dict, std::move(doc)};
 }
+Key Key::body(std::string name, std::string doc)
+{
+    Key key(std::move(name), ValueType::Word, std::move(doc));
+    key.bodies_ = true;
+    return key;
+}
+Key Key::bodyList(std::string name, std::string doc)
+{
+    Key key(std::move(name), ValueType::WordList, std::move(doc));
+    key.bodies_ = true;
+    return key;
+}
+
+std::string Key::typeText() const
+{
+    if (bodies_)
+    {
+        return type_ == ValueType::Word ? "body name" : "list of body names";
+    }
+    return toString(type_);
+}
 
 Key& Key::defaultValue(std::string text)
 {
@@ -345,7 +366,7 @@ std::vector<std::string> Schema::describe() const
     std::vector<std::string> lines;
     for (const Key& key : keys_)
     {
-        std::string line = key.name() + "  (" + toString(key.type());
+        std::string line = key.name() + "  (" + key.typeText();
         if (key.required())
         {
             line += ", required";

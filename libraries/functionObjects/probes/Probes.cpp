@@ -27,7 +27,7 @@ public:
             .add(Key::vectorList("points", "probe locations, by initial position [m]"))
             .add(Key::wordList("fields", "any of: position displacement velocity F P J")
                      .defaultValue("(displacement velocity)"))
-            .add(Key::word("body", "only look in this body").optional());
+            .add(Key::body("body", "only look in this body").optional());
     }
 
     Probes(const Params& params, const typename FunctionObject<D>::Args& args)
@@ -48,14 +48,7 @@ public:
         std::size_t end = particles.size();
         if (params.has("body"))
         {
-            const auto& names = *args.bodyNames;
-            const auto it = std::find(names.begin(), names.end(), params.word("body"));
-            if (it == names.end())
-            {
-                params.fail("body", "probes: no body named '" + params.word("body") + "'",
-                            {"Bodies: " + joinSorted(names), didYouMean(params.word("body"), names)});
-            }
-            const BodyRange& range = particles.bodies[static_cast<std::size_t>(it - names.begin())];
+            const BodyRange& range = particles.bodies[params.bodyIndex("body")];
             begin = range.begin;
             end = range.end;
         }
