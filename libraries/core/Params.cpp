@@ -140,6 +140,32 @@ bool Params::given(std::string_view key) const
                            std::string(key) + "'");
 }
 
+const std::string& Params::written(std::string_view key) const
+{
+    for (const Value& value : values_)
+    {
+        if (value.key.name() == key)
+        {
+            return value.written;
+        }
+    }
+    throw std::logic_error("model '" + context_.label + "' asks for undeclared key '" +
+                           std::string(key) + "'");
+}
+
+std::string Params::summary() const
+{
+    std::string text;
+    for (const Value& value : values_)
+    {
+        if (value.present)
+        {
+            text += (text.empty() ? "" : ", ") + value.key.name() + "=" + value.written;
+        }
+    }
+    return text;
+}
+
 SourceLocation Params::location(std::string_view key) const
 {
     for (const Value& value : values_)

@@ -306,6 +306,7 @@ Params Schema::validate(const Dictionary& dict, const ValidationContext& context
                     throw reader.mismatch(entry->items().front());
                 }
                 value.dict = &entry->dict();
+                value.written = "{ ... }";
             }
             else if (entry->isDict())
             {
@@ -318,6 +319,7 @@ Params Schema::validate(const Dictionary& dict, const ValidationContext& context
             {
                 reader.read(entry->items(), entry->keyLocation(), false, value.real, value.integer,
                             value.boolean, value.text, value.reals, value.words, value.vectors);
+                value.written = entry->items().front().toText();
                 if (entry->items().size() == 1 && entry->items()[0].isList())
                 {
                     for (const Item& element : entry->items()[0].items())
@@ -331,6 +333,7 @@ Params Schema::validate(const Dictionary& dict, const ValidationContext& context
         {
             value.present = true;
             value.where = dict.location();
+            value.written = *key.defaultText();
             auto source = std::make_shared<const SourceText>("<default of '" + key.name() + "'>",
                                                              *key.defaultText());
             std::vector<Item> items = DictionaryParser::parseValue(source, *key.defaultText(), 1);

@@ -176,6 +176,11 @@ public:
     bool has(std::string_view key) const;
     // Written in the dictionary (not defaulted).
     bool given(std::string_view key) const;
+    // The value as written in the dictionary, or the declared default: "3.0e4", "(0.1 0)".
+    const std::string& written(std::string_view key) const;
+    // "key=value, key=value" for every key with a value, in declaration order, as written (or
+    // defaulted): the parameters of a model's summary.
+    std::string summary() const;
     // Where the value was written (the dictionary itself when defaulted).
     SourceLocation location(std::string_view key) const;
     // Where element `index` of a list value was written (the whole value when not a list).
@@ -198,6 +203,7 @@ private:
         Key key = Key::real("", "");
         bool present = false; // has a value
         bool given = false;   // written in the dictionary
+        std::string written;  // the value's text, as written or defaulted
         SourceLocation where;
         std::vector<SourceLocation> elements; // of a list value
         double real = 0.0;

@@ -10,6 +10,7 @@
 // 1D is a bar (uniaxial), 2D is plane strain, 3D is full. The time step uses waveSpeed(F):
 // the largest longitudinal wave speed in the reference configuration at the current F.
 
+#include "core/Format.hpp"
 #include "core/Registry.hpp"
 #include "particles/Types.hpp"
 
@@ -25,7 +26,7 @@ namespace sph
 {
 
 template <int D>
-class Material
+class Material : public RegisteredModel
 {
 public:
     static constexpr const char* family = "material";
@@ -45,8 +46,6 @@ public:
     virtual double maxWaveSpeed(const Mat<D>* F, std::size_t n) const = 0;
     // Young's modulus (used by hourglass control, spec §12).
     virtual double youngsModulus() const = 0;
-    // "neoHookean(mu=3.571e+05, kappa=1.67e+06, rho=1000)"
-    virtual std::string summary() const = 0;
 
     static Schema commonSchema()
     {
@@ -57,6 +56,11 @@ public:
 
 protected:
     explicit Material(const Params& params) : rho_(params.real("rho")) {}
+    // The summary shows the wave speed at F = I: "neoHookean(rho=1000, ..., c=46.3264 m/s)".
+    std::vector<std::string> summaryExtras() const override
+    {
+        return {"c=" + formatNumber(waveSpeed(Mat<D>::Identity())) + " m/s"};
+    }
 
 private:
     double rho_;

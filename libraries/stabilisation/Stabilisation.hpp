@@ -57,7 +57,7 @@ struct ForceStatus
 };
 
 template <int D>
-class Stabilisation
+class Stabilisation : public RegisteredModel
 {
 public:
     static constexpr const char* family = "stabilisation";
@@ -93,9 +93,6 @@ public:
 
     // Π at the current positions (the energy the force derives from).
     virtual double energy(const ForceInput<D>& in) = 0;
-
-    // "gradF" / "vidal(beta=(0.1))" for the run log.
-    virtual std::string summary() const = 0;
 };
 
 } // namespace sph

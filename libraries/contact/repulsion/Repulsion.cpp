@@ -10,7 +10,6 @@
 // Keys:
 //   kappa | coefficient κ of eq. (37), a contact pressure [Pa]          | required
 //   pairs | which bodies may touch, e.g. ((ringA ringB)); () = every pair | ()
-#include "core/Format.hpp"
 #include "contact/Contact.hpp"
 #include "core/InputError.hpp"
 #include "particles/NeighbourList.hpp"
@@ -68,10 +67,6 @@ public:
 
     bool active() const override { return true; }
     std::size_t pairsSearched() const override { return pairsSearched_; }
-    std::string summary() const override
-    {
-        return "repulsion(kappa=" + formatNumber(kappa_) + " Pa)";
-    }
 
     void apply(ContactState<D>& state, std::vector<Vec<D>>& deltaV) override
     {

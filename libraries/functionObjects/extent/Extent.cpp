@@ -126,7 +126,6 @@ public:
         }
         return values;
     }
-    std::string summary() const override { return "extent"; }
     void saveState(std::map<std::string, double>& state) const override
     {
         FunctionObjectModel<D>::saveState(state);

@@ -89,10 +89,6 @@ public:
                 {"firstAmplitude", periods_.firstAmplitude()},
                 {"lastAmplitude", periods_.lastAmplitude()}};
     }
-    std::string summary() const override
-    {
-        return "oscillation(particle " + std::to_string(probe_) + ")";
-    }
     void saveState(std::map<std::string, double>& state) const override
     {
         FunctionObjectModel<D>::saveState(state);
@@ -105,6 +101,11 @@ public:
     }
 
 private:
+    std::vector<std::string> summaryExtras() const override
+    {
+        return {"particle " + std::to_string(probe_)};
+    }
+
     int component_ = 1;
     std::size_t probe_ = 0;
     PeriodTracker periods_;

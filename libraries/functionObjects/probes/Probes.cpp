@@ -8,8 +8,6 @@
 // points, e.g. displacement_x or displacement_x_1.
 #include "functionObjects/FunctionObjectModel.hpp"
 
-#include <sstream>
-
 namespace sph
 {
 
@@ -126,20 +124,18 @@ public:
         this->writeRow(state.time, state.deltaT, row);
     }
 
-    std::string summary() const override
+private:
+    // The particles found for the points: "particles 39 12".
+    std::vector<std::string> summaryExtras() const override
     {
-        std::ostringstream out;
-        out << "probes(" << particles_.size() << " point" << (particles_.size() > 1 ? "s" : "")
-            << ", particles";
+        std::string text = particles_.size() > 1 ? "particles" : "particle";
         for (const auto a : particles_)
         {
-            out << " " << a;
+            text += " " + std::to_string(a);
         }
-        out << ")";
-        return out.str();
+        return {text};
     }
 
-private:
     static std::vector<std::string> components(const std::string& field)
     {
         static const char* axes[3] = {"x", "y", "z"};

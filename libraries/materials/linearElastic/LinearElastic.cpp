@@ -1,7 +1,5 @@
 #include "materials/linearElastic/LinearElastic.hpp"
 
-#include <sstream>
-
 namespace sph
 {
 
@@ -23,19 +21,6 @@ LinearElastic<D>::LinearElastic(const Params& params, const typename Material<D>
     : MaterialModel<D, LinearElastic<D>>(params), elastic_(IsotropicElasticity::read<D>(params)),
       waveSpeed_(std::sqrt(elastic_.waveModulus<D>() / this->density()))
 {
-}
-
-template <int D>
-std::string LinearElastic<D>::summary() const
-{
-    std::ostringstream out;
-    out << "linearElastic(E=" << elastic_.E;
-    if (D > 1)
-    {
-        out << ", nu=" << elastic_.nu;
-    }
-    out << ", rho=" << this->density() << ", c=" << waveSpeed_ << " m/s)";
-    return out.str();
 }
 
 template class LinearElastic<1>;

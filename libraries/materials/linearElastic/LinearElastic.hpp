@@ -49,7 +49,6 @@ public:
     }
     double waveSpeedOf(const Mat<D>&) const { return waveSpeed_; }
     double youngsModulus() const override { return elastic_.E; }
-    std::string summary() const override;
 
 private:
     IsotropicElasticity elastic_;

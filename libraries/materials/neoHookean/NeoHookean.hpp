@@ -62,7 +62,6 @@ public:
     {
         return IsotropicElasticity::fromBulkAndShear(kappa_, mu_).E;
     }
-    std::string summary() const override;
 
     // The same for n gradients at once, in structure-of-arrays form so the compiler vectorises
     // the scalar part (J, I1, J^{-1/3}): the gradient-of-F scheme evaluates a stress for every

@@ -1,7 +1,5 @@
 #include "materials/stVenantKirchhoff/StVenantKirchhoff.hpp"
 
-#include <sstream>
-
 namespace sph
 {
 
@@ -23,19 +21,6 @@ StVenantKirchhoff<D>::StVenantKirchhoff(const Params& params, const typename Mat
     : MaterialModel<D, StVenantKirchhoff<D>>(params),
       elastic_(IsotropicElasticity::read<D>(params)), minimumModulus_(elastic_.waveModulus<D>())
 {
-}
-
-template <int D>
-std::string StVenantKirchhoff<D>::summary() const
-{
-    std::ostringstream out;
-    out << "stVenantKirchhoff(E=" << elastic_.E;
-    if (D > 1)
-    {
-        out << ", nu=" << elastic_.nu;
-    }
-    out << ", rho=" << this->density() << ")";
-    return out.str();
 }
 
 template class StVenantKirchhoff<1>;

@@ -63,7 +63,6 @@ public:
         return std::sqrt(std::max(modulus, minimumModulus_) / this->density());
     }
     double youngsModulus() const override { return elastic_.E; }
-    std::string summary() const override;
 
 private:
     IsotropicElasticity elastic_;

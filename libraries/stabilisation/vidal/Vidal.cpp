@@ -2,8 +2,6 @@
 #include "particles/Parallel.hpp"
 #include "stabilisation/vidal/Vidal.hpp"
 
-#include <sstream>
-
 namespace sph
 {
 
@@ -68,14 +66,6 @@ long Vidal<D>::prepare(const ReferenceConfiguration<D>& ref)
     }
     return corrected_.build(list, ref.x, ref.V,
                             [this](std::size_t, std::size_t k) { return out_[k]; });
-}
-
-template <int D>
-std::string Vidal<D>::summary() const
-{
-    std::ostringstream out;
-    out << "vidal(beta=(" << beta_.transpose() << "))";
-    return out.str();
 }
 
 template class Vidal<1>;
