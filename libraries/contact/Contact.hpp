@@ -32,7 +32,7 @@ struct ContactState
 };
 
 template <int D>
-class Contact
+class Contact : public RegisteredModel
 {
 public:
     static constexpr const char* family = "contact";
@@ -51,7 +51,6 @@ public:
     virtual void apply(ContactState<D>& state, std::vector<Vec<D>>& deltaV) = 0;
     // Pairs of bodies searched in the last call (0 when none could touch).
     virtual std::size_t pairsSearched() const { return 0; }
-    virtual std::string summary() const = 0;
 };
 
 } // namespace sph

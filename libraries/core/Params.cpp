@@ -3,6 +3,7 @@
 #include "Schema.hpp"
 #include "Suggest.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace sph
@@ -83,6 +84,36 @@ const Dictionary& Params::dict(std::string_view key) const
     return *get(key, ValueType::Dict).dict;
 }
 
+std::size_t Params::bodyIndex(std::string_view key) const
+{
+    return bodyIndices(key).front();
+}
+
+std::vector<std::size_t> Params::bodyIndices(std::string_view key) const
+{
+    const auto value = std::find_if(values_.begin(), values_.end(),
+                                    [&](const Value& v) { return v.key.name() == key; });
+    if (value == values_.end() || !value->key.namesBodies() || context_.bodies.empty())
+    {
+        throw std::logic_error("model '" + context_.label + "' reads key '" + std::string(key) +
+                               "' as body names, but " +
+                               (value == values_.end() || !value->key.namesBodies()
+                                    ? "did not declare it with Key::body or Key::bodyList"
+                                    : "the case's bodies were not given to the validation"));
+    }
+    const Value& read = get(key, value->key.type()); // checks that it has a value
+    const std::vector<std::string> names =
+        read.key.type() == ValueType::Word ? std::vector<std::string>{read.text} : read.words;
+    std::vector<std::size_t> result;
+    for (const std::string& name : names)
+    {
+        // Validation checked every name against these bodies.
+        const auto it = std::find(context_.bodies.begin(), context_.bodies.end(), name);
+        result.push_back(static_cast<std::size_t>(it - context_.bodies.begin()));
+    }
+    return result;
+}
+
 bool Params::has(std::string_view key) const
 {
     for (const Value& value : values_)
@@ -107,6 +138,32 @@ bool Params::given(std::string_view key) const
     }
     throw std::logic_error("model '" + context_.label + "' asks for undeclared key '" +
                            std::string(key) + "'");
+}
+
+const std::string& Params::written(std::string_view key) const
+{
+    for (const Value& value : values_)
+    {
+        if (value.key.name() == key)
+        {
+            return value.written;
+        }
+    }
+    throw std::logic_error("model '" + context_.label + "' asks for undeclared key '" +
+                           std::string(key) + "'");
+}
+
+std::string Params::summary() const
+{
+    std::string text;
+    for (const Value& value : values_)
+    {
+        if (value.present)
+        {
+            text += (text.empty() ? "" : ", ") + value.key.name() + "=" + value.written;
+        }
+    }
+    return text;
 }
 
 SourceLocation Params::location(std::string_view key) const

@@ -14,6 +14,8 @@
 //     SPH_REGISTER_MODEL(Kernel, CubicSpline, "cubicSpline");          // dimension-independent
 //     SPH_REGISTER_DIM_MODEL(Material, NeoHookean, "neoHookean");       // Dim = 1, 2, 3
 //     SPH_REGISTER_DIM_MODEL_FOR(Generator, Disk, "disk", 2);           // only some dimensions
+// A family whose models appear in the run log derives Base from RegisteredModel: a model's
+// summary, "name(key=value, ...)", then comes from its registered name and its params.
 //
 // The records live in one process-wide store inside libsphCore, so models from plugin
 // libraries loaded with dlopen land in the same tables as the built-in ones. A duplicate name
@@ -21,6 +23,7 @@
 
 #include "FieldSpec.hpp"
 #include "InputError.hpp"
+#include "RegisteredModel.hpp"
 #include "Schema.hpp"
 #include "Suggest.hpp"
 
@@ -28,6 +31,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace sph
@@ -103,7 +107,8 @@ public:
         return nullptr;
     }
 
-    // Builds model `name` from already validated params.
+    // Builds model `name` from already validated params; a RegisteredModel learns its name and
+    // parameters (for its summary).
     static std::unique_ptr<Base> create(const std::string& name, const Params& params,
                                         const Args& args)
     {
@@ -114,7 +119,14 @@ public:
         }
         const auto& factory =
             *static_cast<const Factory*>(record->factories.at(Base::dimension).get());
-        return factory(params, args);
+        std::unique_ptr<Base> model = factory(params, args);
+        if constexpr (std::is_base_of_v<RegisteredModel, Base>)
+        {
+            RegisteredModel& registered = *model;
+            registered.typeName_ = name;
+            registered.parameters_ = params.summary();
+        }
+        return model;
     }
 };
 
@@ -162,8 +174,19 @@ InputError unknownModelError(const std::string& family, const std::string& name,
 // What a selector may add to the plain `type NAME;` selection.
 struct Selection
 {
+    Selection(std::string type = {}, Schema keys = {}, std::vector<std::string> names = {})
+        : defaultType(std::move(type)), extraKeys(std::move(keys)), bodies(std::move(names))
+    {
+    }
+    // Only the case's bodies: selectModel<Contact<D>>(dict, args, D, Selection::withBodies(b)).
+    static Selection withBodies(std::vector<std::string> names)
+    {
+        return {{}, {}, std::move(names)};
+    }
+
     std::string defaultType; // used when `type` is absent (empty: `type` is required)
     Schema extraKeys;        // keys the caller reads from the same dictionary (e.g. `region`)
+    std::vector<std::string> bodies; // the case's bodies, checked by Key::body (empty: unknown)
 };
 
 // Reads `type` from `dict`, finds the model, validates `dict` against its schema and builds it.
@@ -199,7 +222,11 @@ std::unique_ptr<Base> selectModel(const Dictionary& dict, const typename Base::A
     }
     Schema schema = record->schema();
     schema.include(selection.extraKeys);
-    return Registry<Base>::create(name, schema.validate(dict, name, dimension), args);
+    ValidationContext context;
+    context.dimension = dimension;
+    context.label = name;
+    context.bodies = selection.bodies;
+    return Registry<Base>::create(name, schema.validate(dict, context), args);
 }
 
 // Validates `dict` against model `name` and builds it (for code and tests that know the name).

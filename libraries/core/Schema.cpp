@@ -94,6 +94,27 @@ Key Key::dict(std::string name, std::string doc)
 {
     return {std::move(name), ValueType::Dict, std::move(doc)};
 }
+Key Key::body(std::string name, std::string doc)
+{
+    Key key(std::move(name), ValueType::Word, std::move(doc));
+    key.bodies_ = true;
+    return key;
+}
+Key Key::bodyList(std::string name, std::string doc)
+{
+    Key key(std::move(name), ValueType::WordList, std::move(doc));
+    key.bodies_ = true;
+    return key;
+}
+
+std::string Key::typeText() const
+{
+    if (bodies_)
+    {
+        return type_ == ValueType::Word ? "body name" : "list of body names";
+    }
+    return toString(type_);
+}
 
 Key& Key::defaultValue(std::string text)
 {
@@ -285,6 +306,7 @@ Params Schema::validate(const Dictionary& dict, const ValidationContext& context
                     throw reader.mismatch(entry->items().front());
                 }
                 value.dict = &entry->dict();
+                value.written = "{ ... }";
             }
             else if (entry->isDict())
             {
@@ -297,6 +319,7 @@ Params Schema::validate(const Dictionary& dict, const ValidationContext& context
             {
                 reader.read(entry->items(), entry->keyLocation(), false, value.real, value.integer,
                             value.boolean, value.text, value.reals, value.words, value.vectors);
+                value.written = entry->items().front().toText();
                 if (entry->items().size() == 1 && entry->items()[0].isList())
                 {
                     for (const Item& element : entry->items()[0].items())
@@ -310,6 +333,7 @@ Params Schema::validate(const Dictionary& dict, const ValidationContext& context
         {
             value.present = true;
             value.where = dict.location();
+            value.written = *key.defaultText();
             auto source = std::make_shared<const SourceText>("<default of '" + key.name() + "'>",
                                                              *key.defaultText());
             std::vector<Item> items = DictionaryParser::parseValue(source, *key.defaultText(), 1);
@@ -345,7 +369,7 @@ std::vector<std::string> Schema::describe() const
     std::vector<std::string> lines;
     for (const Key& key : keys_)
     {
-        std::string line = key.name() + "  (" + toString(key.type());
+        std::string line = key.name() + "  (" + key.typeText();
         if (key.required())
         {
             line += ", required";

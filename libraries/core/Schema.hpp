@@ -54,6 +54,10 @@ public:
     static Key stringList(std::string name, std::string doc);
     static Key vectorList(std::string name, std::string doc);
     static Key dict(std::string name, std::string doc);
+    // The name of one of the case's bodies (a word), or a list of them: checked against the
+    // bodies of ValidationContext, read with Params::bodyIndex / bodyIndices.
+    static Key body(std::string name, std::string doc);
+    static Key bodyList(std::string name, std::string doc);
 
     // Dictionary text used when the key is absent ("1.5", "(0 0)", "none"). A single number
     // as the default of a vector fills every component.
@@ -75,6 +79,9 @@ public:
     const std::optional<std::string>& defaultText() const { return default_; }
     const std::vector<std::string>& allowedWords() const { return choices_; }
     int fixedSize() const { return size_; }
+    bool namesBodies() const { return bodies_; }
+    // "word", "list of body names", ...: the value's kind in messages and -listTypes.
+    std::string typeText() const;
     bool hasRange() const { return hasMin_ || hasMax_; }
     // "(0, inf)", "[-1, 0.5)", "" when unbounded.
     std::string rangeText() const;
@@ -95,6 +102,7 @@ private:
     double max_ = std::numeric_limits<double>::infinity();
     std::vector<std::string> choices_;
     int size_ = 0;
+    bool bodies_ = false;
 };
 
 class Params;
@@ -104,6 +112,7 @@ struct ValidationContext
     int dimension = 0;    // components of a Vector key; 0 = not known (accept any count)
     std::string label;    // who reads the dictionary: "neoHookean", "controlDict", ...
     std::set<std::string> ignoredKeys{"type"}; // consumed by the caller (e.g. the selector)
+    std::vector<std::string> bodies; // the case's bodies, in index order; empty = not known
 };
 
 // Whether a dictionary's `type` entry selects the model (and is skipped by validation, the
@@ -158,11 +167,20 @@ public:
     const std::vector<std::string>& stringList(std::string_view key) const;
     const std::vector<std::vector<double>>& vectorList(std::string_view key) const;
     const Dictionary& dict(std::string_view key) const;
+    // The index of a body key's value (Key::body) in the case's bodies, and of each name of a
+    // Key::bodyList, in the order written. Needs the bodies in the ValidationContext.
+    std::size_t bodyIndex(std::string_view key) const;
+    std::vector<std::size_t> bodyIndices(std::string_view key) const;
 
     // Has a value (written or defaulted). Only optional keys without default can lack one.
     bool has(std::string_view key) const;
     // Written in the dictionary (not defaulted).
     bool given(std::string_view key) const;
+    // The value as written in the dictionary, or the declared default: "3.0e4", "(0.1 0)".
+    const std::string& written(std::string_view key) const;
+    // "key=value, key=value" for every key with a value, in declaration order, as written (or
+    // defaulted): the parameters of a model's summary.
+    std::string summary() const;
     // Where the value was written (the dictionary itself when defaulted).
     SourceLocation location(std::string_view key) const;
     // Where element `index` of a list value was written (the whole value when not a list).
@@ -185,6 +203,7 @@ private:
         Key key = Key::real("", "");
         bool present = false; // has a value
         bool given = false;   // written in the dictionary
+        std::string written;  // the value's text, as written or defaulted
         SourceLocation where;
         std::vector<SourceLocation> elements; // of a list value
         double real = 0.0;

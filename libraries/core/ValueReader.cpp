@@ -92,7 +92,7 @@ std::string ValueReader::expected() const
     case ValueType::Bool:
         return "true or false";
     default:
-        return "a " + toString(key_.type());
+        return "a " + key_.typeText();
     }
 }
 
@@ -210,7 +210,29 @@ std::string ValueReader::wordValue(const Item& item) const
                              owner_ + "'",
                          lines);
     }
+    if (key_.namesBodies())
+    {
+        checkBody(item);
+    }
     return item.text();
+}
+
+void ValueReader::checkBody(const Item& item) const
+{
+    const std::vector<std::string>& bodies = context_.bodies;
+    if (bodies.empty() || std::find(bodies.begin(), bodies.end(), item.text()) != bodies.end())
+    {
+        return; // not known here (e.g. sphParticles), or one of them
+    }
+    std::vector<std::string> lines{"Bodies (" + std::to_string(bodies.size()) +
+                                   "): " + joinSorted(bodies)};
+    const std::string hint = didYouMean(item.text(), bodies);
+    lines.push_back(hint.empty() ? "The bodies are the top-level entries of system/particlesDict."
+                                 : hint);
+    throw InputError(item.location(),
+                     "no body named '" + item.text() + "' ('" + key_.name() + "' in '" + owner_ +
+                         "')",
+                     lines);
 }
 
 std::string ValueReader::stringValue(const Item& item) const

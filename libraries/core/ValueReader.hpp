@@ -41,6 +41,7 @@ private:
     void checkRange(const Item& item, double value) const;
     bool truthValue(const Item& item) const;
     std::string wordValue(const Item& item) const;
+    void checkBody(const Item& item) const;
     std::string stringValue(const Item& item) const;
     const std::vector<Item>& listItems(const Item& item) const;
     std::vector<double> vectorValue(const Item& item, int components) const;

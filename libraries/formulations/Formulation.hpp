@@ -17,7 +17,7 @@ namespace sph
 {
 
 template <int D>
-class Formulation
+class Formulation : public RegisteredModel
 {
 public:
     static constexpr const char* family = "formulation";
@@ -32,7 +32,6 @@ public:
     virtual bool updatesReference() const = 0;
     // Whether it moves at `step`, last moved at `lastUpdate`.
     virtual bool updateDue(long step, long lastUpdate) const = 0;
-    virtual std::string summary() const = 0;
 };
 
 } // namespace sph

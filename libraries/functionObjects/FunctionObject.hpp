@@ -58,7 +58,7 @@ struct StepState
 };
 
 template <int D>
-class FunctionObject
+class FunctionObject : public RegisteredModel
 {
 public:
     static constexpr const char* family = "functionObject";
@@ -93,8 +93,6 @@ public:
     virtual void execute(const StepState<D>& state) = 0;
     // Lines for the end-of-run summary (e.g. error norms).
     virtual std::vector<std::string> report() const { return {}; }
-    // "probes(points (0.1333), fields displacement velocity)" for the run header.
-    virtual std::string summary() const = 0;
     // Named results for the run's postProcessing/summary.json (e.g. error norms).
     virtual std::map<std::string, double> results() const { return {}; }
     // Running quantities that a restart must continue (energy reference, error norms, ...).

@@ -10,6 +10,7 @@
 // evaluate() works on a batch (one particle's neighbours) so the hot loops pay one virtual
 // call per particle, not per pair.
 
+#include "core/Format.hpp"
 #include "core/Registry.hpp"
 
 #include <cmath>
@@ -18,7 +19,7 @@
 namespace sph
 {
 
-class Kernel
+class Kernel : public RegisteredModel
 {
 public:
     static constexpr const char* family = "kernel";
@@ -42,7 +43,8 @@ public:
     virtual double dWdr(double r) const = 0;
     // W and dW/dr for n distances.
     virtual void evaluate(const double* r, std::size_t n, double* W, double* dWdr) const = 0;
-    virtual std::string name() const = 0;
+    // The registered name ("cubicSpline").
+    const std::string& name() const { return typeName(); }
 
     static Schema commonSchema()
     {
@@ -57,6 +59,11 @@ protected:
         : dimension_(args.dimension), hOverDx_(params.real("hOverDx")),
           h_(hOverDx_ * args.spacing), supportFactor_(supportFactor)
     {
+    }
+    // "cubicSpline(hOverDx=1.5, h=0.0051 m)"
+    std::vector<std::string> summaryExtras() const override
+    {
+        return {"h=" + formatNumber(h_) + " m"};
     }
 
 private:

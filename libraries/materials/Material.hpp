@@ -10,6 +10,7 @@
 // 1D is a bar (uniaxial), 2D is plane strain, 3D is full. The time step uses waveSpeed(F):
 // the largest longitudinal wave speed in the reference configuration at the current F.
 
+#include "core/Format.hpp"
 #include "core/Registry.hpp"
 #include "particles/ParticleFields.hpp"
 #include "particles/ParticleSet.hpp"
@@ -27,7 +28,7 @@ namespace sph
 {
 
 template <int D>
-class Material
+class Material : public RegisteredModel
 {
 public:
     static constexpr const char* family = "material";
@@ -51,8 +52,6 @@ public:
     virtual double maxWaveSpeed(const Mat<D>* F, std::size_t n) const = 0;
     // Young's modulus (used by hourglass control, spec §12).
     virtual double youngsModulus() const = 0;
-    // "neoHookean(mu=3.571e+05, kappa=1.67e+06, rho=1000)"
-    virtual std::string summary() const = 0;
 
     static Schema commonSchema()
     {
@@ -63,6 +62,11 @@ public:
 
 protected:
     explicit Material(const Params& params) : rho_(params.real("rho")) {}
+    // The summary shows the wave speed at F = I: "neoHookean(rho=1000, ..., c=46.3264 m/s)".
+    std::vector<std::string> summaryExtras() const override
+    {
+        return {"c=" + formatNumber(waveSpeed(Mat<D>::Identity())) + " m/s"};
+    }
 
 private:
     double rho_;
@@ -137,14 +141,6 @@ std::pair<double, double> stretchSquaredRange(const Mat<D>& F)
         solver.computeDirect(C, Eigen::EigenvaluesOnly);
         return {solver.eigenvalues()[0], solver.eigenvalues()[2]};
     }
-}
-
-// Lamé constants from Young's modulus and Poisson's ratio (3D / plane strain).
-inline std::pair<double, double> lameFromYoung(double E, double nu)
-{
-    const double mu = E / (2.0 * (1.0 + nu));
-    const double lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-    return {lambda, mu};
 }
 
 } // namespace sph

@@ -77,7 +77,8 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
     const typename Contact<D>::Args contactArgs{kernel_.get(), bodyNames_};
     if (schemes.contact)
     {
-        contact_ = selectModel<Contact<D>>(*schemes.contact, contactArgs, D);
+        contact_ = selectModel<Contact<D>>(*schemes.contact, contactArgs, D,
+                                           Selection::withBodies(bodyNames_));
     }
     else
     {
@@ -337,7 +338,8 @@ void Simulation<D>::setupFunctionObjects()
         args.materials = &materials_;
         args.bodyNames = &bodyNames_;
         args.fields = &fields_;
-        functionObjects_.push_back(selectModel<FunctionObject<D>>(entry.dict(), args, D));
+        functionObjects_.push_back(selectModel<FunctionObject<D>>(
+            entry.dict(), args, D, Selection::withBodies(bodyNames_)));
     }
 }
 

@@ -90,7 +90,7 @@ struct ReferenceNeeds
 };
 
 template <int D>
-class Stabilisation
+class Stabilisation : public RegisteredModel
 {
 public:
     static constexpr const char* family = "stabilisation";
@@ -129,9 +129,6 @@ public:
 
     // Π at the current positions (the energy the force derives from).
     virtual double energy(const ForceInput<D>& in) = 0;
-
-    // "gradF" / "vidal(beta=(0.1))" for the run log.
-    virtual std::string summary() const = 0;
 };
 
 } // namespace sph

@@ -31,7 +31,7 @@ struct WaveSpeedBound
 };
 
 template <int D>
-class TimeIntegration
+class TimeIntegration : public RegisteredModel
 {
 public:
     static constexpr const char* family = "timeIntegration";
@@ -59,7 +59,6 @@ public:
     // moves); fixed particles keep x and v = 0.
     virtual void advance(double dt, const std::vector<Vec<D>>& acceleration,
                          const std::vector<std::uint8_t>& fixed, std::vector<Vec<D>>& x) = 0;
-    virtual std::string summary() const = 0;
 };
 
 } // namespace sph

@@ -22,7 +22,6 @@ public:
     double energyOf(const Mat<D>& F) const { return 0.5 * E_ * (F(0, 0) - 1.0) * (F(0, 0) - 1.0); }
     double waveSpeedOf(const Mat<D>&) const { return std::sqrt(E_ / this->density()); }
     double youngsModulus() const override { return E_; }
-    std::string summary() const override { return "pluginLinear"; }
 
 private:
     double E_;

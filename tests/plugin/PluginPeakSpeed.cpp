@@ -43,7 +43,6 @@ public:
             peak_[a] = std::max(peak_[a], state.velocity[a].norm());
         }
     }
-    std::string summary() const override { return "pluginPeakSpeed"; }
 
 private:
     std::vector<double>& peak_;

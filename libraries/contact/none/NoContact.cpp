@@ -14,7 +14,6 @@ public:
 
     bool active() const override { return false; }
     void apply(ContactState<D>&, std::vector<Vec<D>>&) override {}
-    std::string summary() const override { return "none"; }
 };
 
 SPH_REGISTER_DIM_MODEL(Contact, NoContact, "none");

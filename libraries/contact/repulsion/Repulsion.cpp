@@ -10,10 +10,8 @@
 // Keys:
 //   kappa | coefficient κ of eq. (37), a contact pressure [Pa]          | required
 //   pairs | which bodies may touch, e.g. ((ringA ringB)); () = every pair | ()
-#include "core/Format.hpp"
 #include "contact/Contact.hpp"
 #include "core/InputError.hpp"
-#include "core/Suggest.hpp"
 #include "particles/NeighbourList.hpp"
 #include "particles/Parallel.hpp"
 
@@ -38,7 +36,7 @@ public:
         return Schema()
             .add(Key::real("kappa", "coefficient kappa of seed eq. (37), a contact pressure [Pa]")
                      .positive())
-            .add(Key::wordList("pairs", "which bodies may touch, as a flat list of name pairs, "
+            .add(Key::bodyList("pairs", "which bodies may touch, as a flat list of name pairs, "
                                         "e.g. (ringA ringB); () = every pair")
                      .defaultValue("()"));
     }
@@ -52,22 +50,13 @@ public:
             params.fail("pairs", "repulsion: 'pairs' must list body names two by two",
                         {"e.g. pairs (ringA ringB ringA wall);"});
         }
-        const auto& names = args.bodyNames;
-        const std::size_t bodies = names.size();
+        const std::size_t bodies = args.bodyNames.size();
         allowed_.assign(bodies, std::vector<std::uint8_t>(bodies, pairs.empty() ? 1 : 0));
-        const auto index = [&](std::size_t i) {
-            const auto it = std::find(names.begin(), names.end(), pairs[i]);
-            if (it == names.end())
-            {
-                params.fail("pairs", i, "repulsion: no body named '" + pairs[i] + "'",
-                            {"Bodies: " + joinSorted(names), didYouMean(pairs[i], names)});
-            }
-            return static_cast<std::size_t>(it - names.begin());
-        };
+        const std::vector<std::size_t> index = params.bodyIndices("pairs");
         for (std::size_t i = 0; i + 1 < pairs.size(); i += 2)
         {
-            const std::size_t A = index(i);
-            const std::size_t B = index(i + 1);
+            const std::size_t A = index[i];
+            const std::size_t B = index[i + 1];
             if (A == B)
             {
                 params.fail("pairs", i + 1, "repulsion: a body cannot be in contact with itself");
@@ -78,10 +67,6 @@ public:
 
     bool active() const override { return true; }
     std::size_t pairsSearched() const override { return pairsSearched_; }
-    std::string summary() const override
-    {
-        return "repulsion(kappa=" + formatNumber(kappa_) + " Pa)";
-    }
 
     void apply(ContactState<D>& state, std::vector<Vec<D>>& deltaV) override
     {

@@ -20,7 +20,6 @@ public:
 
     bool updatesReference() const override { return false; }
     bool updateDue(long, long) const override { return false; }
-    std::string summary() const override { return "totalLagrangian"; }
 };
 
 SPH_REGISTER_DIM_MODEL(Formulation, TotalLagrangian, "totalLagrangian");

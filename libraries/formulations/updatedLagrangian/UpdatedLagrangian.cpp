@@ -36,10 +36,6 @@ public:
     {
         return step - lastUpdate >= interval_;
     }
-    std::string summary() const override
-    {
-        return "updatedLagrangian(referenceUpdateInterval=" + std::to_string(interval_) + ")";
-    }
 
 private:
     long interval_;

@@ -102,7 +102,6 @@ public:
         return {this->name() + ": total energy drift at the end " + formatScientific(drift_) +
                 ", largest |drift| " + formatScientific(maxDrift_)};
     }
-    std::string summary() const override { return "energy"; }
     std::map<std::string, double> results() const override
     {
         return {{"finalDrift", drift_},

@@ -249,11 +249,6 @@ public:
                 {"relativePeriodMean", periods_.lastMean() / amplitude},
                 {"relativeMaxPeriodMean", periods_.maxAbsMean() / amplitude}};
     }
-    std::string summary() const override
-    {
-        return "exactSolution(fixedFreeBar, " + description_ + ")";
-    }
-
     void saveState(std::map<std::string, double>& state) const override
     {
         FunctionObjectModel<D>::saveState(state);
@@ -272,6 +267,9 @@ public:
     }
 
 private:
+    // What the solution was built from (read off the case unless given), for the run header.
+    std::vector<std::string> summaryExtras() const override { return {description_}; }
+
     std::unique_ptr<FixedFreeBar> solution_;
     std::size_t probe_ = 0;
     double xi_ = 0.0;

@@ -25,7 +25,7 @@ public:
     {
         return FunctionObjectModel<D>::commonSchema()
             .add(Key::word("component", "displacement component").choices({"x", "y", "z"}).optional())
-            .add(Key::wordList("bodies", "which bodies; () = all").defaultValue("()"));
+            .add(Key::bodyList("bodies", "which bodies; () = all").defaultValue("()"));
     }
 
     Extent(const Params& params, const typename FunctionObject<D>::Args& args)
@@ -41,17 +41,7 @@ public:
                                          std::to_string(D) + "D");
         }
         const auto& names = *args.bodyNames;
-        const auto& chosen = params.wordList("bodies");
-        for (std::size_t i = 0; i < chosen.size(); ++i)
-        {
-            const auto it = std::find(names.begin(), names.end(), chosen[i]);
-            if (it == names.end())
-            {
-                params.fail("bodies", i, "extent: no body named '" + chosen[i] + "'",
-                            {"Bodies: " + joinSorted(names), didYouMean(chosen[i], names)});
-            }
-            bodies_.push_back(static_cast<std::size_t>(it - names.begin()));
-        }
+        bodies_ = params.bodyIndices("bodies");
         if (bodies_.empty())
         {
             for (std::size_t b = 0; b < names.size(); ++b)
@@ -136,7 +126,6 @@ public:
         }
         return values;
     }
-    std::string summary() const override { return "extent"; }
     void saveState(std::map<std::string, double>& state) const override
     {
         FunctionObjectModel<D>::saveState(state);

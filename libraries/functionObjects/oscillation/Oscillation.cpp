@@ -29,7 +29,7 @@ public:
         return FunctionObjectModel<D>::commonSchema()
             .add(Key::vector("point", "the probe, by initial position [m]"))
             .add(Key::word("component", "displacement component").choices({"x", "y", "z"}).optional())
-            .add(Key::word("body", "only look in this body").optional());
+            .add(Key::body("body", "only look in this body").optional());
     }
 
     Oscillation(const Params& params, const typename FunctionObject<D>::Args& args)
@@ -46,15 +46,8 @@ public:
         std::size_t end = p.size();
         if (params.has("body"))
         {
-            const auto& names = *args.bodyNames;
-            const auto it = std::find(names.begin(), names.end(), params.word("body"));
-            if (it == names.end())
-            {
-                params.fail("body", "oscillation: no body named '" + params.word("body") + "'",
-                            {"Bodies: " + joinSorted(names), didYouMean(params.word("body"), names)});
-            }
-            begin = p.bodies[static_cast<std::size_t>(it - names.begin())].begin;
-            end = p.bodies[static_cast<std::size_t>(it - names.begin())].end;
+            begin = p.bodies[params.bodyIndex("body")].begin;
+            end = p.bodies[params.bodyIndex("body")].end;
         }
         const Vec<D> target = toVec<D>(params.vector("point"));
         probe_ = begin;
@@ -96,10 +89,6 @@ public:
                 {"firstAmplitude", periods_.firstAmplitude()},
                 {"lastAmplitude", periods_.lastAmplitude()}};
     }
-    std::string summary() const override
-    {
-        return "oscillation(particle " + std::to_string(probe_) + ")";
-    }
     void saveState(std::map<std::string, double>& state) const override
     {
         FunctionObjectModel<D>::saveState(state);
@@ -112,6 +101,11 @@ public:
     }
 
 private:
+    std::vector<std::string> summaryExtras() const override
+    {
+        return {"particle " + std::to_string(probe_)};
+    }
+
     int component_ = 1;
     std::size_t probe_ = 0;
     PeriodTracker periods_;

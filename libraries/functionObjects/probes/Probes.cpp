@@ -8,8 +8,6 @@
 // points, e.g. displacement_x or displacement_x_1.
 #include "functionObjects/FunctionObjectModel.hpp"
 
-#include <sstream>
-
 namespace sph
 {
 
@@ -27,7 +25,7 @@ public:
             .add(Key::vectorList("points", "probe locations, by initial position [m]"))
             .add(Key::wordList("fields", "any of: position displacement velocity F P J")
                      .defaultValue("(displacement velocity)"))
-            .add(Key::word("body", "only look in this body").optional());
+            .add(Key::body("body", "only look in this body").optional());
     }
 
     Probes(const Params& params, const typename FunctionObject<D>::Args& args)
@@ -48,14 +46,7 @@ public:
         std::size_t end = particles.size();
         if (params.has("body"))
         {
-            const auto& names = *args.bodyNames;
-            const auto it = std::find(names.begin(), names.end(), params.word("body"));
-            if (it == names.end())
-            {
-                params.fail("body", "probes: no body named '" + params.word("body") + "'",
-                            {"Bodies: " + joinSorted(names), didYouMean(params.word("body"), names)});
-            }
-            const BodyRange& range = particles.bodies[static_cast<std::size_t>(it - names.begin())];
+            const BodyRange& range = particles.bodies[params.bodyIndex("body")];
             begin = range.begin;
             end = range.end;
         }
@@ -133,20 +124,18 @@ public:
         this->writeRow(state.time, state.deltaT, row);
     }
 
-    std::string summary() const override
+private:
+    // The particles found for the points: "particles 39 12".
+    std::vector<std::string> summaryExtras() const override
     {
-        std::ostringstream out;
-        out << "probes(" << particles_.size() << " point" << (particles_.size() > 1 ? "s" : "")
-            << ", particles";
+        std::string text = particles_.size() > 1 ? "particles" : "particle";
         for (const auto a : particles_)
         {
-            out << " " << a;
+            text += " " + std::to_string(a);
         }
-        out << ")";
-        return out.str();
+        return {text};
     }
 
-private:
     static std::vector<std::string> components(const std::string& field)
     {
         static const char* axes[3] = {"x", "y", "z"};

@@ -151,7 +151,6 @@ public:
     {
         return {this->name() + ": " + std::to_string(written_) + " snapshots in " + folder_.string()};
     }
-    std::string summary() const override { return "snapshot"; }
     void saveState(std::map<std::string, double>& state) const override
     {
         state["next"] = schedule_.next();

@@ -112,7 +112,6 @@ public:
                 {"minJ", lowestJ_},
                 {"maxJ", highestJ_}};
     }
-    std::string summary() const override { return "stabilityMonitor"; }
     void saveState(std::map<std::string, double>& state) const override
     {
         FunctionObjectModel<D>::saveState(state);

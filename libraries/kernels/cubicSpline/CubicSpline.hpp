@@ -47,7 +47,6 @@ public:
     static std::string description();
     static Schema schema() { return commonSchema(); }
     using KernelModel::KernelModel;
-    std::string name() const override { return "cubicSpline"; }
 };
 
 } // namespace sph

@@ -32,7 +32,6 @@ public:
     static std::string description();
     static Schema schema() { return commonSchema(); }
     using KernelModel::KernelModel;
-    std::string name() const override { return "quinticSpline"; }
 };
 
 } // namespace sph

@@ -1,7 +1,5 @@
 #include "materials/neoHookean/NeoHookean.hpp"
 
-#include <sstream>
-
 namespace sph
 {
 
@@ -24,15 +22,6 @@ template <int D>
 NeoHookean<D>::NeoHookean(const Params& params, const typename Material<D>::Args&)
     : MaterialModel<D, NeoHookean<D>>(params), mu_(params.real("mu")), kappa_(params.real("kappa"))
 {
-}
-
-template <int D>
-std::string NeoHookean<D>::summary() const
-{
-    std::ostringstream out;
-    out << "neoHookean(mu=" << mu_ << ", kappa=" << kappa_ << ", rho=" << this->density()
-        << ", c0=" << this->waveSpeed(Mat<D>::Identity()) << " m/s)";
-    return out.str();
 }
 
 template class NeoHookean<1>;

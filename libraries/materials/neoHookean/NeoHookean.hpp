@@ -12,6 +12,7 @@
 // Wave speed: the principal longitudinal modulus ∂²Ψ/∂λ_i² at the smallest stretch λ,
 //   M = ½ μ J^{-2/3} ((10/9) I1/λ^2 - 2/3) + κ J^2/λ^2   (= κ + 4μ/3 at F = I).
 
+#include "materials/IsotropicElasticity.hpp"
 #include "materials/Material.hpp"
 #include "particles/FastMath.hpp"
 
@@ -57,8 +58,10 @@ public:
                                kappa_ * J * J / lowest;
         return std::sqrt(std::max(modulus, 0.0) / this->density());
     }
-    double youngsModulus() const override { return 9.0 * kappa_ * mu_ / (3.0 * kappa_ + mu_); }
-    std::string summary() const override;
+    double youngsModulus() const override
+    {
+        return IsotropicElasticity::fromBulkAndShear(kappa_, mu_).E;
+    }
 
     // The same for n gradients at once, in structure-of-arrays form so the compiler vectorises
     // the scalar part (J, I1, J^{-1/3}): the gradient-of-F scheme evaluates a stress for every

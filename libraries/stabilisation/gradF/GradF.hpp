@@ -44,7 +44,6 @@ public:
     ForceStatus computeForces(const ForceInput<D>& in, ForceOutput<D>& out,
                               bool wantEnergy) override;
     double energy(const ForceInput<D>& in) override;
-    std::string summary() const override { return "gradF"; }
 
     // Kinematics of particle a at positions x: f_a, F_a = f_a F^r_a and G_a (public for tests).
     struct Kinematics

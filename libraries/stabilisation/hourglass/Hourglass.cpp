@@ -1,8 +1,6 @@
 #include "particles/Parallel.hpp"
 #include "stabilisation/hourglass/Hourglass.hpp"
 
-#include <sstream>
-
 namespace sph
 {
 
@@ -75,14 +73,6 @@ ForceStatus Hourglass<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>&
     }
     checkForces<D>(out.T, status);
     return status;
-}
-
-template <int D>
-std::string Hourglass<D>::summary() const
-{
-    std::ostringstream out;
-    out << "hourglass(alpha=" << alpha_ << ")";
-    return out.str();
 }
 
 template class Hourglass<1>;

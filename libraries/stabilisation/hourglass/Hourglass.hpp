@@ -46,7 +46,6 @@ public:
     {
         return core_.energy(in, StandardGradients<D>{in.ref});
     }
-    std::string summary() const override;
 
     // The hourglass force on particle a alone (public for the pairwise test).
     Vec<D> hourglassForce(std::size_t a, const ForceInput<D>& in,

@@ -37,7 +37,6 @@ public:
     {
         return core_.energy(in, StandardGradients<D>{in.ref});
     }
-    std::string summary() const override { return "none"; }
 
 private:
     CsphCore<D> core_;

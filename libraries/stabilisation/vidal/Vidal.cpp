@@ -2,8 +2,6 @@
 #include "particles/Parallel.hpp"
 #include "stabilisation/vidal/Vidal.hpp"
 
-#include <sstream>
-
 namespace sph
 {
 
@@ -72,14 +70,6 @@ ForceStatus Vidal<D>::prepare(const ReferenceConfiguration<D>& ref)
                         : ForceStatus::failed(FailureKind::singularReference, singular, 0.0,
                                               "shifted corrected-gradient matrix (too few "
                                               "neighbours in x^r)");
-}
-
-template <int D>
-std::string Vidal<D>::summary() const
-{
-    std::ostringstream out;
-    out << "vidal(beta=(" << beta_.transpose() << "))";
-    return out.str();
 }
 
 template class Vidal<1>;

@@ -65,7 +65,6 @@ public:
         return core_.compute(in, out, wantEnergy, gradients());
     }
     double energy(const ForceInput<D>& in) override { return core_.energy(in, gradients()); }
-    std::string summary() const override;
 
     const Vec<D>& beta() const { return beta_; }
 

@@ -101,8 +101,6 @@ public:
         previousDeltaT_ = dt;
     }
 
-    std::string summary() const override { return "leapfrog"; }
-
 private:
     double courant_;
     long interval_;

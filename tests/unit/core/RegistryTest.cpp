@@ -86,6 +86,49 @@ public:
 SPH_REGISTER_DIM_MODEL(Gadget, Lever, "lever");
 SPH_REGISTER_DIM_MODEL_FOR(Gadget, Plane, "plane", 2);
 
+// A family whose models are summarised from their registered name and params.
+class Knob : public RegisteredModel
+{
+public:
+    static constexpr const char* family = "testKnob";
+    static constexpr int dimension = 0;
+    struct Args
+    {
+    };
+};
+
+class Dial : public Knob
+{
+public:
+    static std::string description() { return "A dial."; }
+    static Schema schema()
+    {
+        return Schema()
+            .add(Key::real("turns", "turns").defaultValue("1.5"))
+            .add(Key::vector("axis", "axis").size(2))
+            .add(Key::word("label", "a label").optional());
+    }
+    Dial(const Params& p, const Args&) : turns_(p.real("turns")) {}
+
+private:
+    std::vector<std::string> summaryExtras() const override
+    {
+        return {"degrees=" + std::to_string(static_cast<int>(360 * turns_))};
+    }
+    double turns_;
+};
+
+class Toggle : public Knob
+{
+public:
+    static std::string description() { return "A toggle."; }
+    static Schema schema() { return Schema(); }
+    Toggle(const Params&, const Args&) {}
+};
+
+SPH_REGISTER_MODEL(Knob, Dial, "dial");
+SPH_REGISTER_MODEL(Knob, Toggle, "toggle");
+
 } // namespace
 
 TEST_CASE("registry: one-line registration, sorted names", "[registry]")
@@ -107,6 +150,22 @@ TEST_CASE("registry: selectModel validates and builds by name", "[registry]")
 
     const auto gadgets = parse("g { type lever; pivot (0 0 0); }\n");
     CHECK(selectModel<Gadget<3>>(gadgets->find("g")->dict(), {}, 3)->dim() == 33);
+}
+
+TEST_CASE("registry: a model's summary is its name and its params as written", "[registry]")
+{
+    // Defaults included, as declared; optional keys without a value left out; then the model's
+    // derived figures.
+    const auto dict = parse("k { type dial; axis (1   0.5e0); }\n");
+    const auto dial = selectModel<Knob>(dict->find("k")->dict(), {}, 0);
+    CHECK(dial->typeName() == "dial");
+    CHECK(dial->summary() == "dial(turns=1.5, axis=(1 0.5e0), degrees=540)");
+    const auto named = parse("k { type dial; turns 2; axis (0 1); label x; }\n");
+    CHECK(selectModel<Knob>(named->find("k")->dict(), {}, 0)->summary() ==
+          "dial(turns=2, axis=(0 1), label=x, degrees=720)");
+    // No parameters, no figures: the bare name.
+    const auto toggle = parse("k { type toggle; }\n");
+    CHECK(selectModel<Knob>(toggle->find("k")->dict(), {}, 0)->summary() == "toggle");
 }
 
 TEST_CASE("registry: unknown names list the valid ones with a suggestion", "[registry][errors]")

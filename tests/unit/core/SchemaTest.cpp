@@ -200,3 +200,34 @@ TEST_CASE("schema: describe() lists every key with type, default, range and doc"
     CHECK(lines[2] == "nu  (real, default 0.3, range (-1, 0.5))  Poisson's ratio");
     CHECK_THAT(lines[5], Catch::Contains("one of: exact fast"));
 }
+
+TEST_CASE("schema: body keys are checked against the case's bodies", "[schema]")
+{
+    const Schema schema = Schema()
+                              .add(Key::body("body", "only this body").optional())
+                              .add(Key::bodyList("bodies", "these bodies").defaultValue("()"));
+    ValidationContext c = context();
+    c.bodies = {"ringA", "ringB", "wall"};
+    const auto dict = parse("body ringB;\nbodies (wall ringA);\n");
+    const Params p = schema.validate(*dict, c);
+    CHECK(p.word("body") == "ringB");
+    CHECK(p.bodyIndex("body") == 1);
+    CHECK(p.bodyIndices("bodies") == std::vector<std::size_t>{2, 0});
+    CHECK(schema.describe()[0] == "body  (body name, optional)  only this body");
+    CHECK(schema.describe()[1] == "bodies  (list of body names, default ())  these bodies");
+
+    // The offending word itself, the bodies and the closest one.
+    const auto typo = parse("bodies (ringA rinB);\n");
+    const std::string text = requireInputError([&] { schema.validate(*typo, c); }, 1, 15,
+                                               "no body named 'rinB' ('bodies' in 'testDict')");
+    CHECK_THAT(text, Catch::Contains("Bodies (3): ringA, ringB, wall"));
+    CHECK_THAT(text, Catch::Contains("Did you mean 'ringB'?"));
+    const auto far = parse("body bar;\n");
+    CHECK_THAT(requireInputError([&] { schema.validate(*far, c); }, 1, 6, "no body named 'bar'"),
+               Catch::Contains("the top-level entries of system/particlesDict"));
+
+    // Bodies not known (e.g. sphParticles): any word passes; the index cannot be asked for.
+    const Params unknown = schema.validate(*far, context());
+    CHECK(unknown.word("body") == "bar");
+    CHECK_THROWS_AS(unknown.bodyIndex("body"), std::logic_error);
+}

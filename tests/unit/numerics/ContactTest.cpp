@@ -36,7 +36,8 @@ ParticleSet<2> twoBlocks(double gap)
 std::unique_ptr<Contact<2>> repulsion(const Kernel& kernel, const std::string& extra = "")
 {
     return test::build<Contact<2>>("type repulsion; kappa 1e6; " + extra,
-                                   {&kernel, std::vector<std::string>{"A", "B"}}, 2);
+                                   {&kernel, std::vector<std::string>{"A", "B"}}, 2,
+                                   Selection::withBodies({"A", "B"}));
 }
 
 } // namespace
@@ -105,7 +106,8 @@ TEST_CASE("repulsion costs nothing for separated bodies and a single body", "[co
     }
     // Within reach (gap 2 < support 3) but not listed in `pairs`: no search either.
     auto three = test::build<Contact<2>>("type repulsion; kappa 1e6; pairs (A C);",
-                                         {kernel.get(), std::vector<std::string>{"A", "B", "C"}}, 2);
+                                         {kernel.get(), std::vector<std::string>{"A", "B", "C"}}, 2,
+                                         Selection::withBodies({"A", "B", "C"}));
     ParticleSet<2> near = twoBlocks(1.0);
     near.bodies.push_back(BodyRange{"C", near.size(), near.size()});
     ContactState<2> nearState{near.x, near.v, near, 1e-3,
@@ -117,7 +119,12 @@ TEST_CASE("repulsion costs nothing for separated bodies and a single body", "[co
 TEST_CASE("repulsion errors: unknown or self pairs", "[contact][errors]")
 {
     const auto kernel = test::makeKernel("cubicSpline", 2, 1.0, 1.5);
-    CHECK_THROWS_WITH(repulsion(*kernel, "pairs (A Bee);"), Catch::Contains("no body named 'Bee'"));
+    // The unknown name is reported where it was written, with the bodies and a suggestion.
+    const std::string unknown =
+        test::requireInputError([&] { repulsion(*kernel, "pairs (A Bee);"); }, 1, 45,
+                                "no body named 'Bee' ('pairs' in 'model')");
+    CHECK_THAT(unknown, Catch::Contains("Bodies (2): A, B"));
+    CHECK_THAT(unknown, Catch::Contains("Did you mean 'B'?"));
     CHECK_THROWS_WITH(repulsion(*kernel, "pairs (A A);"), Catch::Contains("in contact with itself"));
     CHECK_THROWS_WITH(repulsion(*kernel, "pairs (A);"), Catch::Contains("two by two"));
 }

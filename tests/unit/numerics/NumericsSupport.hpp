@@ -20,11 +20,12 @@ namespace sph::test
 
 // Builds model `Base` from dictionary text such as "type neoHookean; mu 1; kappa 5; rho 1;".
 template <class Base>
-std::unique_ptr<Base> build(const std::string& text, const typename Base::Args& args, int dim)
+std::unique_ptr<Base> build(const std::string& text, const typename Base::Args& args, int dim,
+                            const Selection& selection = {})
 {
     loadModelLibraries();
     const auto dict = DictionaryParser::parseString("model { " + text + " }\n", "test");
-    return selectModel<Base>(dict->find("model")->dict(), args, dim);
+    return selectModel<Base>(dict->find("model")->dict(), args, dim, selection);
 }
 
 inline std::unique_ptr<Kernel> makeKernel(const std::string& name, int dim, double spacing,

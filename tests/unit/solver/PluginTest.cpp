@@ -24,6 +24,10 @@ TEST_CASE("a case selects a model from its own plugin library", "[plugin]")
     REQUIRE(test::runParticles(caseDir) == 0);
     CHECK(test::runSolver(caseDir, {"-dryRun"}) == 0);
     CHECK(test::runSolver(caseDir) == 0);
+    // Its run-header summary comes from the registry: name, keys as written, wave speed.
+    std::string output;
+    CHECK(test::runProcess("sphSolid", {"-case", caseDir.string(), "-dryRun"}, &output) == 0);
+    CHECK_THAT(output, Catch::Contains("pluginLinear(rho=1, E=3e4, c=173.205 m/s)"));
     // -listTypes shows it once the case's libraries are loaded.
     std::ostringstream listing;
     listTypes(listing, "material");
