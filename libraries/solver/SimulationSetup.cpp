@@ -356,6 +356,7 @@ std::vector<std::string> Simulation<D>::describe() const
     lines.push_back("Formulation " + formulation_->summary());
     lines.push_back("Scheme      " + scheme_->summary());
     lines.push_back("Contact     " + contact_->summary());
+    lines.push_back("Integrator  " + integrator_->summary());
     for (std::size_t b = 0; b < bodyNames_.size(); ++b)
     {
         std::size_t fixed = 0;
