@@ -21,16 +21,16 @@ namespace
 Schema bodySchema()
 {
     return Schema()
-        .add(Key::dict("material", "the body's material { type neoHookean; mu ...; kappa ...; "
-                                   "rho ...; }"))
+        .add(Key::dict("material", "the body's material { type ...; rho ...; ... }")
+                 .selects("material"))
         .add(Key::vector("velocity", "initial velocity of the whole body [m/s]").defaultValue("0"))
         .add(Key::dict("initialVelocity", "initial velocities by region: name { region { ... }; "
-                                          "type uniform | rotation | cantileverMode; ... }, "
-                                          "applied in order after 'velocity'")
+                                          "type ...; ... }, applied in order after 'velocity'")
+                 .selects("velocityField")
                  .optional())
         .add(Key::dict("initialDisplacement", "initial displacements x = X + u by region: name { "
-                                              "region { ... }; type affine | random | "
-                                              "checkerboard; ... }, added in order")
+                                              "region { ... }; type ...; ... }, added in order")
+                 .selects("displacementField")
                  .optional())
         .add(Key::dict("constraints", "fixed particles by region: name { type fixed; region { "
                                       "... }; }")
@@ -41,7 +41,8 @@ Schema constraintSchema()
 {
     return Schema()
         .add(Key::word("type", "fixed: position held, velocity zero").choices({"fixed"}))
-        .add(Key::dict("region", "which particles (by initial position)"));
+        .add(Key::dict("region", "which particles, by initial position { type ...; ... }")
+                 .selects("region"));
 }
 
 // A field or constraint entry reads its `region { ... }` besides the model's own keys.
