@@ -1,7 +1,7 @@
 #pragma once
 // Contact between bodies (system/sphSchemes):
 //
-//   contact { type repulsion; ... }      // none | repulsion
+//   contact { type repulsion; ... }      // the types: sphSolid -listTypes contact
 //
 // Applied after the leapfrog position update as a velocity change (spec §9, §12). A case with
 // one body, or with bodies far apart, costs nothing: `none` does no work at all, and models

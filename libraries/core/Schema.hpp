@@ -71,9 +71,17 @@ public:
     Key& range(double low, double high, bool lowInclusive = true, bool highInclusive = true);
     Key& choices(std::vector<std::string> words);
     Key& size(int components); // fixed vector size instead of the case dimension
+    // The dictionary selects a model of `family` by its `type` (or holds entries that each do,
+    // e.g. `functions`). The `type ...` of its doc ("{ type ...; }", appended when absent) is
+    // then printed as the family's registered types, looked up at print time so that models
+    // from the case's own libraries appear too: "{ type cubicSpline | wendlandC2; }".
+    Key& selects(std::string family);
 
     const std::string& name() const { return name_; }
-    const std::string& doc() const { return doc_; }
+    // The doc, with the registered types of the family it selects (those available in
+    // `dimension` when it is not 0).
+    std::string doc(int dimension = 0) const;
+    const std::string& selectedFamily() const { return family_; }
     ValueType type() const { return type_; }
     bool required() const { return !default_ && !optional_; }
     const std::optional<std::string>& defaultText() const { return default_; }
@@ -103,6 +111,7 @@ private:
     std::vector<std::string> choices_;
     int size_ = 0;
     bool bodies_ = false;
+    std::string family_;
 };
 
 class Params;

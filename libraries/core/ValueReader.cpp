@@ -117,9 +117,10 @@ std::string ValueReader::example(int n)
 std::vector<std::string> ValueReader::notes() const
 {
     std::vector<std::string> result;
-    if (!key_.doc().empty())
+    const std::string doc = key_.doc(context_.dimension);
+    if (!doc.empty())
     {
-        result.push_back("'" + key_.name() + "': " + key_.doc() + ".");
+        result.push_back("'" + key_.name() + "': " + doc + ".");
     }
     if (isDefault_)
     {

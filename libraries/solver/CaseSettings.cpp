@@ -23,7 +23,9 @@ Schema ControlSettings::schema()
                  .defaultValue("1"))
         .add(Key::integer("maxSteps", "stop after this many time steps").min(1).optional())
         .add(Key::stringList("libs", "extra model libraries to load at start").defaultValue("()"))
-        .add(Key::dict("functions", "function objects: name { type ...; }").optional());
+        .add(Key::dict("functions", "function objects: name { type ...; }")
+                 .selects("functionObject")
+                 .optional());
 }
 
 ControlSettings ControlSettings::read(const CaseDictionaries& dicts)
@@ -58,12 +60,16 @@ Schema SchemeSettings::schema()
 {
     return Schema()
         .add(Key::integer("dimension", "space dimension of the case").range(1, 3))
-        .add(Key::dict("kernel", "smoothing kernel { type cubicSpline; hOverDx 1.5; }"))
-        .add(Key::dict("formulation", "{ type totalLagrangian; } or { type updatedLagrangian; }"))
-        .add(Key::dict("stabilisation", "internal-force scheme { type none | vidal | hourglass | "
-                                        "gradF; }"))
-        .add(Key::dict("contact", "contact between bodies { type none | repulsion; }").optional())
-        .add(Key::dict("timeIntegration", "time integrator { type leapfrog; } (default leapfrog)")
+        .add(Key::dict("kernel", "smoothing kernel { type ...; hOverDx 1.5; }").selects("kernel"))
+        .add(Key::dict("formulation", "when the reference configuration moves { type ...; }")
+                 .selects("formulation"))
+        .add(Key::dict("stabilisation", "internal-force scheme { type ...; }")
+                 .selects("stabilisation"))
+        .add(Key::dict("contact", "contact between bodies { type ...; }")
+                 .selects("contact")
+                 .optional())
+        .add(Key::dict("timeIntegration", "time integrator { type ...; } (default leapfrog)")
+                 .selects("timeIntegration")
                  .optional());
 }
 

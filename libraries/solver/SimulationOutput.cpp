@@ -52,7 +52,7 @@ void Simulation<D>::writeSummary(const RunSummary& summary, const std::string& f
     json["dimension"] = D;
     json["particles"] = particles_.size();
     json["spacing"] = spacing_;
-    json["kernel"] = kernel_->name();
+    json["kernel"] = kernel_->summary();
     json["hOverDx"] = kernel_->hOverDx();
     json["formulation"] = formulation_->summary();
     json["stabilisation"] = scheme_->summary();

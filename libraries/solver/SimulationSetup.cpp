@@ -21,16 +21,16 @@ namespace
 Schema bodySchema()
 {
     return Schema()
-        .add(Key::dict("material", "the body's material { type neoHookean; mu ...; kappa ...; "
-                                   "rho ...; }"))
+        .add(Key::dict("material", "the body's material { type ...; rho ...; ... }")
+                 .selects("material"))
         .add(Key::vector("velocity", "initial velocity of the whole body [m/s]").defaultValue("0"))
         .add(Key::dict("initialVelocity", "initial velocities by region: name { region { ... }; "
-                                          "type uniform | rotation | cantileverMode; ... }, "
-                                          "applied in order after 'velocity'")
+                                          "type ...; ... }, applied in order after 'velocity'")
+                 .selects("velocityField")
                  .optional())
         .add(Key::dict("initialDisplacement", "initial displacements x = X + u by region: name { "
-                                              "region { ... }; type affine | random | "
-                                              "checkerboard; ... }, added in order")
+                                              "region { ... }; type ...; ... }, added in order")
+                 .selects("displacementField")
                  .optional())
         .add(Key::dict("constraints", "fixed particles by region: name { type fixed; region { "
                                       "... }; }")
@@ -41,14 +41,16 @@ Schema constraintSchema()
 {
     return Schema()
         .add(Key::word("type", "fixed: position held, velocity zero").choices({"fixed"}))
-        .add(Key::dict("region", "which particles (by initial position)"));
+        .add(Key::dict("region", "which particles, by initial position { type ...; ... }")
+                 .selects("region"));
 }
 
 // A field or constraint entry reads its `region { ... }` besides the model's own keys.
 Selection withRegion(std::string defaultType = "")
 {
     return {std::move(defaultType),
-            Schema().add(Key::dict("region", "which particles (by initial position)"))};
+            Schema().add(Key::dict("region", "which particles, by initial position { type ...; ... }")
+                             .selects("region"))};
 }
 
 } // namespace
@@ -351,8 +353,7 @@ std::vector<std::string> Simulation<D>::describe() const
     out << "Case        " << dicts_.caseDir().string() << " (" << caseName_ << "), " << D
         << "D, " << particles_.size() << " particles, spacing " << spacing_ << " m";
     lines.push_back(out.str());
-    lines.push_back("Kernel      " + kernel_->name() + "(hOverDx=" + formatNumber(kernel_->hOverDx()) +
-                    ", h=" + formatNumber(kernel_->h()) + " m)");
+    lines.push_back("Kernel      " + kernel_->summary());
     lines.push_back("Formulation " + formulation_->summary());
     lines.push_back("Scheme      " + scheme_->summary());
     lines.push_back("Contact     " + contact_->summary());

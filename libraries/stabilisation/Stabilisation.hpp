@@ -1,7 +1,7 @@
 #pragma once
 // Internal-force schemes ("stabilisation" in system/sphSchemes), runtime-selectable:
 //
-//   stabilisation { type gradF; }        // none | vidal | hourglass | gradF
+//   stabilisation { type gradF; }        // the types: sphSolid -listTypes stabilisation
 //
 // Every scheme works with both formulations (total- and updated-Lagrangian, which differ only
 // in the reference configuration it is given) and in 1D/2D/3D. Each has an energy and a force:

@@ -168,6 +168,27 @@ TEST_CASE("registry: a model's summary is its name and its params as written", "
     CHECK(selectModel<Knob>(toggle->find("k")->dict(), {}, 0)->summary() == "toggle");
 }
 
+TEST_CASE("registry: a key that selects a model lists the family's types when printed",
+          "[registry][schema]")
+{
+    const Schema schema =
+        Schema().add(Key::dict("knob", "a knob { type ...; }").selects("testKnob"));
+    CHECK(schema.describe()[0] == "knob  (dictionary, required)  a knob { type dial | toggle; }");
+    // A model registered after the schema was declared (as by a library loaded from a case's
+    // `libs`) is listed too: the names are looked up when the text is printed.
+    Registry<Knob>::add(
+        "slider", "A slider.", [] { return Schema(); }, "plugin/Slider.cpp",
+        [](const Params&, const Knob::Args&) -> std::unique_ptr<Knob> { return nullptr; }, nullptr);
+    CHECK_THAT(schema.describe()[0], Catch::EndsWith("a knob { type dial | slider | toggle; }"));
+    const auto missing = parse("type x;\n");
+    const std::string text = requireInputError([&] { schema.validate(*missing, "testDict"); }, 0, 0,
+                                               "missing required key 'knob'");
+    CHECK_THAT(text, Catch::Contains("'knob': a knob { type dial | slider | toggle; }"));
+    // Without the syntax in the doc, it is appended.
+    CHECK(Key::dict("k", "a knob").selects("testKnob").doc() ==
+          "a knob { type dial | slider | toggle; ... }");
+}
+
 TEST_CASE("registry: unknown names list the valid ones with a suggestion", "[registry][errors]")
 {
     const auto dict = parse("w\n{\n    type  sprockett;\n}\n", "system/sphSchemes");

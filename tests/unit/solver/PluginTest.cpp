@@ -2,6 +2,7 @@
 // selectable by name; a missing library is a fatal error with dlerror and a checklist.
 #include "core/InputError.hpp"
 #include "core/ModelListing.hpp"
+#include "solver/CaseSettings.hpp"
 #include "io/PvdSeries.hpp"
 #include "io/VtuFile.hpp"
 #include "solver/SolverCases.hpp"
@@ -33,6 +34,35 @@ TEST_CASE("a case selects a model from its own plugin library", "[plugin]")
     listTypes(listing, "material");
     CHECK_THAT(listing.str(), Catch::Contains("pluginLinear"));
     CHECK_THAT(listing.str(), Catch::Contains("Test plugin"));
+}
+
+TEST_CASE("lists of valid types come from the registry: a plugin's models appear",
+          "[plugin][schema]")
+{
+    test::TempDir dir;
+    const auto caseDir = test::copyTutorial("bar1D/dykaBar", dir.path());
+    test::setEntry(caseDir / "system" / "controlDict", "libs", "(\"" SPH_TEST_PLUGIN "\")");
+    std::ofstream(caseDir / "constant" / "bodies") << "bar { velocity (1); }\n";
+    REQUIRE(test::runParticles(caseDir) == 0);
+    try
+    {
+        test::runSolver(caseDir, {"-dryRun"});
+        FAIL("no error");
+    }
+    catch (const InputError& error)
+    {
+        CHECK_THAT(error.message(), Catch::Contains("missing required key 'material' in 'bar'"));
+        CHECK_THAT(std::string(error.what()),
+                   Catch::Contains("{ type linearElastic | neoHookean | pluginLinear | "
+                                   "stVenantKirchhoff; rho ...; ... }"));
+    }
+    // The case dictionaries' documentation lists the plugin's function object as well.
+    std::string functions;
+    for (const std::string& line : ControlSettings::schema().describe())
+    {
+        functions += line.rfind("functions", 0) == 0 ? line : "";
+    }
+    CHECK_THAT(functions, Catch::Contains("pluginPeakSpeed"));
 }
 
 TEST_CASE("a missing plugin library is fatal with dlerror and a checklist", "[plugin]")
