@@ -120,7 +120,7 @@ std::vector<std::string> RegistryStore::takeConflicts()
 }
 
 InputError unknownModelError(const std::string& family, const std::string& name,
-                             const SourceLocation& where, int dimension)
+                             const SourceLocation& where, int dimension, bool caseLibraries)
 {
     const RegistryStore& store = RegistryStore::instance();
     const std::vector<std::string> valid = store.names(family, dimension);
@@ -141,9 +141,15 @@ InputError unknownModelError(const std::string& family, const std::string& name,
         return InputError(where, message, notes);
     }
     std::string hint = didYouMean(name, valid);
-    hint += std::string(hint.empty() ? "" : "  ") +
-            "(Types from your own libraries need them listed in system/controlDict 'libs'.)";
-    notes.push_back(hint);
+    if (caseLibraries)
+    {
+        hint += std::string(hint.empty() ? "" : "  ") +
+                "(Types from your own libraries need them listed in system/controlDict 'libs'.)";
+    }
+    if (!hint.empty())
+    {
+        notes.push_back(hint);
+    }
     return InputError(where, message, notes);
 }
 

@@ -167,9 +167,26 @@ struct DimRegistration
     }
 };
 
-// The error for an unknown model name: sorted valid names, "did you mean", and the libs hint.
+// The error for an unknown model name: sorted valid names, "did you mean", and the libs hint
+// (not for a family that a case's libraries cannot extend, e.g. sphStudy's metrics).
 InputError unknownModelError(const std::string& family, const std::string& name,
-                             const SourceLocation& where, int dimension);
+                             const SourceLocation& where, int dimension,
+                             bool caseLibraries = true);
+
+// Whether a case's `libs` can add models to the family (a family says no by declaring
+// `static constexpr bool caseLibraries = false;`).
+template <class Base>
+constexpr bool extensibleByCase()
+{
+    if constexpr (requires { Base::caseLibraries; })
+    {
+        return Base::caseLibraries;
+    }
+    else
+    {
+        return true;
+    }
+}
 
 // What a selector may add to the plain `type NAME;` selection.
 struct Selection
@@ -218,7 +235,7 @@ std::unique_ptr<Base> selectModel(const Dictionary& dict, const typename Base::A
     const ModelRecord* record = Registry<Base>::find(name);
     if (!record)
     {
-        throw unknownModelError(family, name, where, Base::dimension);
+        throw unknownModelError(family, name, where, Base::dimension, extensibleByCase<Base>());
     }
     Schema schema = record->schema();
     schema.include(selection.extraKeys);
@@ -237,7 +254,8 @@ std::unique_ptr<Base> createModel(const std::string& name, const Dictionary& dic
     const ModelRecord* record = Registry<Base>::find(name);
     if (!record)
     {
-        throw unknownModelError(Base::family, name, dict.location(), Base::dimension);
+        throw unknownModelError(Base::family, name, dict.location(), Base::dimension,
+                                extensibleByCase<Base>());
     }
     return Registry<Base>::create(name, record->schema().validate(dict, name, dimension), args);
 }

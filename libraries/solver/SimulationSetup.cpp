@@ -381,19 +381,6 @@ std::vector<std::string> Simulation<D>::describe() const
     return lines;
 }
 
-template <int D>
-std::string Simulation<D>::particleName(std::size_t a) const
-{
-    std::ostringstream out;
-    out << "particle " << a;
-    if (a < particles_.size())
-    {
-        out << " (body '" << bodyNames_[static_cast<std::size_t>(particles_.body[a])]
-            << "', initial position (" << particles_.X[a].transpose() << "))";
-    }
-    return out.str();
-}
-
 template class Simulation<1>;
 template class Simulation<2>;
 template class Simulation<3>;

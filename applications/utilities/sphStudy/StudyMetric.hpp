@@ -37,6 +37,7 @@ class StudyMetric
 public:
     static constexpr const char* family = "studyMetric";
     static constexpr int dimension = 0;
+    static constexpr bool caseLibraries = false; // compiled into sphStudy; no `libs` here
     struct Args
     {
         // The study read so far (axes and variants; valid only while the metric is built).

@@ -217,6 +217,8 @@ TEST_CASE("sphStudy reports mistakes in studyDict at their place", "[study][erro
         CHECK_THAT(output, Catch::Contains("Valid studyMetric types (4): exactSolution, "
                                            "referenceFile, referenceVariant, summary"));
         CHECK_THAT(output, Catch::Contains("Did you mean 'summary'?"));
+        // sphStudy loads no case libraries: no hint about controlDict's libs.
+        CHECK_THAT(output, !Catch::Contains("libs"));
     }
     SECTION("a key of another metric type")
     {
