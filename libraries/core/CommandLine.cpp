@@ -79,7 +79,15 @@ std::string CommandLine::usage() const
     {
         out << "\n" << extra_;
     }
-    return out.str();
+    // Boost prints every option with two dashes; show one, as options are meant to be typed
+    // (the same width, so the descriptions stay aligned).
+    std::string text = out.str();
+    for (std::size_t at = text.find("\n  --"); at != std::string::npos;
+         at = text.find("\n  --", at + 1))
+    {
+        text.replace(at, 5, "\n   -");
+    }
+    return text;
 }
 
 bool CommandLine::parse(int argc, const char* const* argv)
