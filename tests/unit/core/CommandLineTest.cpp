@@ -5,7 +5,7 @@
 
 using namespace sph;
 
-TEST_CASE("-help lists the options with one dash, as they are typed", "[commandLine]")
+TEST_CASE("the help text lists the options with one dash, as they are typed", "[commandLine]")
 {
     CommandLine line("sphTest", "a test program");
     line.enableModelOptions(true, true, true);
