@@ -9,6 +9,7 @@
 #include <spawn.h>
 #include <sys/wait.h>
 
+#include <Eigen/LU>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -152,4 +153,44 @@ TEST_CASE("a killed run leaves a readable series that restarts", "[output]")
                                       "endTime=" + endTime.str()}) == 0);
     series.load();
     CHECK(series.entries().back().time >= killedAt + 2e-5);
+}
+
+TEST_CASE("the derived display fields: Cauchy stress and volume ratio of a sheared block", "[output]")
+{
+    test::TempDir dir;
+    const auto caseDir = test::writeBlockCase(dir.path() / "block", "kernel { type cubicSpline; }\n"
+                                              "formulation { type totalLagrangian; }\n"
+                                              "stabilisation { type none; }", 2e-4, 1e-4);
+    REQUIRE(test::runParticles(caseDir) == 0);
+    REQUIRE(test::runSolver(caseDir) == 0);
+    PvdSeries series(caseDir / "VTK" / "block.pvd");
+    series.load();
+    const VtuData data = readVtu(caseDir / "VTK" / series.entries().back().file);
+    const auto& F = data.pointData.at("deformationGradient").values;
+    const auto& P = data.pointData.at("firstPiolaKirchhoffStress").values;
+    const auto& sigma = data.pointData.at("cauchyStress").values;
+    const auto& J = data.pointData.at("volumeRatio").values;
+    double largestShear = 0.0;
+    for (std::size_t a = 0; a < data.pointCount(); ++a)
+    {
+        Eigen::Matrix2d Fa;
+        Eigen::Matrix2d Pa;
+        Eigen::Matrix2d Sa;
+        for (int i = 0; i < 2; ++i)
+        {
+            for (int j = 0; j < 2; ++j)
+            {
+                Fa(i, j) = F[9 * a + 3 * i + j];
+                Pa(i, j) = P[9 * a + 3 * i + j];
+                Sa(i, j) = sigma[9 * a + 3 * i + j];
+            }
+        }
+        CHECK(J[a] == Approx(Fa.determinant()).epsilon(1e-14));
+        const Eigen::Matrix2d expected = Pa * Fa.transpose() / Fa.determinant();
+        CHECK((Sa - expected).norm() <= 1e-12 * expected.norm());
+        // A hyperelastic Cauchy stress is symmetric (P F^T is; F^T P would not be).
+        CHECK(std::abs(Sa(0, 1) - Sa(1, 0)) <= 1e-9 * Sa.norm());
+        largestShear = std::max(largestShear, std::abs(Sa(0, 1)));
+    }
+    CHECK(largestShear > 0.0);
 }
