@@ -28,7 +28,8 @@ namespace sph
 {
 
 // The energy balance at a time level (spec §10), kept by the solver's energy audit:
-//   total = kinetic + strain - external - contact, conserved by an exact integrator;
+//   total = kinetic + strain + dissipated - external - contact, conserved by an exact
+//   integrator;
 //   drift = (total - total at the first level) / |total at the first level|.
 struct EnergyBalance
 {
@@ -36,6 +37,7 @@ struct EnergyBalance
     double strain = 0.0;   // Π^n of the scheme
     double external = 0.0; // work of external (body) forces since t = 0
     double contact = 0.0;  // work of contact forces since t = 0
+    double dissipated = 0.0; // energy dissipated by plastic flow since t = 0 (committed levels)
     double total = 0.0;
     double drift = 0.0;
 };

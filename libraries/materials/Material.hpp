@@ -9,6 +9,11 @@
 //
 // 1D is a bar (uniaxial), 2D is plane strain, 3D is full. The time step uses waveSpeed(F):
 // the largest longitudinal wave speed in the reference configuration at the current F.
+//
+// A material may keep a per-particle history (plastic strain, docs/theory/plasticity.md): it
+// declares the fields in the registry it is given, evaluates every stress as a trial state
+// from the particle's last committed history (HistoryOf says whose) and changes that history
+// only in commit(), once per accepted time level. Elastic materials ignore all of this.
 
 #include "core/Format.hpp"
 #include "core/Registry.hpp"
@@ -23,9 +28,23 @@
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace sph
 {
+
+// Whose committed history each gradient F[i] of an evaluation uses: particle first + i (its
+// own gradient), or, for the samples of the gradient-of-F scheme around one particle, that
+// particle for all of them (docs/theory/plasticity.md §P7).
+struct HistoryOf
+{
+    std::size_t first = 0;
+    bool shared = false;
+
+    static HistoryOf particles(std::size_t first) { return {first, false}; }
+    static HistoryOf around(std::size_t particle) { return {particle, true}; }
+    std::size_t particle(std::size_t i) const { return shared ? first : first + i; }
+};
 
 template <int D>
 class Material : public RegisteredModel
@@ -39,19 +58,40 @@ public:
         // build a material alone), and the particles of the body it serves.
         ParticleFields<D>* fields = nullptr;
         BodyRange particles;
+        // The particles' F of the last force evaluation, from which a material with history
+        // computes the state it displays (null in tests).
+        const std::vector<Mat<D>>* F = nullptr;
     };
 
     virtual ~Material() = default;
 
     double density() const { return rho_; }
+    // Ψ, P and c of a material point in its initial state (no history yet).
     virtual double energy(const Mat<D>& F) const = 0;
     virtual Mat<D> stress(const Mat<D>& F) const = 0;
-    // P[i] = P(F[i]) and, when psi is not null, psi[i] = Ψ(F[i]), for i < n.
-    virtual void evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n) const = 0;
     virtual double waveSpeed(const Mat<D>& F) const = 0;
-    virtual double maxWaveSpeed(const Mat<D>* F, std::size_t n) const = 0;
+    // P[i] = P(F[i]) and, when psi is not null, psi[i] = Ψ(F[i]), for i < n, each with the
+    // committed history of history.particle(i) (for a material with history Ψ is the
+    // incremental energy W of docs/theory/plasticity.md (P4.2), of which P is the derivative).
+    virtual void evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n,
+                          HistoryOf history) const = 0;
+    // The largest wave speed of particles first .. first + n at their gradients F[0 .. n).
+    virtual double maxWaveSpeed(const Mat<D>* F, std::size_t n, std::size_t first) const = 0;
     // Young's modulus (used by hourglass control, spec §12).
     virtual double youngsModulus() const = 0;
+
+    // Materials with history: whether there is one, and the commit of particles first ..
+    // first + n at their gradients F (the accepted level), returning the energy this commit
+    // dissipates, Σ V0 ΔD. Called once per level, after the level was written.
+    virtual bool hasHistory() const { return false; }
+    virtual double commit(const Mat<D>* F, const double* V0, std::size_t first, std::size_t n)
+    {
+        (void)F;
+        (void)V0;
+        (void)first;
+        (void)n;
+        return 0.0;
+    }
 
     static Schema commonSchema()
     {
@@ -83,7 +123,7 @@ public:
 
     double energy(const Mat<D>& F) const final { return self().energyOf(F); }
     Mat<D> stress(const Mat<D>& F) const final { return self().stressOf(F); }
-    void evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n) const final
+    void evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n, HistoryOf) const final
     {
         if constexpr (requires(const Derived& m) { m.stressBatch(F, P, n); })
         {
@@ -105,7 +145,7 @@ public:
         }
     }
     double waveSpeed(const Mat<D>& F) const final { return self().waveSpeedOf(F); }
-    double maxWaveSpeed(const Mat<D>* F, std::size_t n) const final
+    double maxWaveSpeed(const Mat<D>* F, std::size_t n, std::size_t) const final
     {
         double c = 0.0;
         for (std::size_t i = 0; i < n; ++i)

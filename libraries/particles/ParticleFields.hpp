@@ -194,6 +194,52 @@ private:
     std::function<T(std::size_t)> value_;
 };
 
+// A display quantity computed piece by piece: each piece serves a range of particles (the body
+// of one model instance); particles no piece covers show the fill value.
+template <class T>
+class PiecewiseDerivedArray final : public FieldArray
+{
+public:
+    PiecewiseDerivedArray(std::function<std::size_t()> size, T fill)
+        : size_(std::move(size)), fill_(std::move(fill))
+    {
+    }
+    void addPiece(std::size_t begin, std::size_t end, std::function<T(std::size_t)> value)
+    {
+        pieces_.push_back({begin, end, std::move(value)});
+    }
+    std::size_t size() const override { return size_(); }
+    void get(std::size_t a, double* out) const override
+    {
+        for (const Piece& piece : pieces_)
+        {
+            if (a >= piece.begin && a < piece.end)
+            {
+                fieldValues::get(piece.value(a), out);
+                return;
+            }
+        }
+        fieldValues::get(fill_, out);
+    }
+    void set(std::size_t, const double*) override
+    {
+        throw std::logic_error("a derived field cannot be set");
+    }
+    void resize(std::size_t) override {}
+    bool stored() const override { return false; }
+
+private:
+    struct Piece
+    {
+        std::size_t begin;
+        std::size_t end;
+        std::function<T(std::size_t)> value;
+    };
+    std::function<std::size_t()> size_;
+    T fill_;
+    std::vector<Piece> pieces_;
+};
+
 template <int D>
 class ParticleFields
 {
@@ -254,6 +300,35 @@ public:
             throw std::logic_error("derived field '" + spec.name() + "' must be display only");
         }
         add(spec, std::make_unique<DerivedArray<T>>([this] { return size_; }, std::move(value)));
+    }
+
+    // A display quantity of the particles [begin, end) served by one model instance; several
+    // instances (one per body) add their pieces under the same spec, the others show zero.
+    template <class T>
+    void deriveOver(const FieldSpec& spec, std::size_t begin, std::size_t end,
+                    std::type_identity_t<std::function<T(std::size_t)>> value)
+    {
+        checkKind<T>(spec);
+        if (!spec.isDisplay() || spec.isRestart())
+        {
+            throw std::logic_error("derived field '" + spec.name() + "' must be display only");
+        }
+        for (auto& field : fields_)
+        {
+            if (field.spec == spec)
+            {
+                auto* pieces = dynamic_cast<PiecewiseDerivedArray<T>*>(field.array.get());
+                if (!pieces)
+                {
+                    throw std::logic_error("particle field '" + spec.name() + "' is declared twice");
+                }
+                pieces->addPiece(begin, end, std::move(value));
+                return;
+            }
+        }
+        auto array = std::make_unique<PiecewiseDerivedArray<T>>([this] { return size_; }, zero<T>());
+        array->addPiece(begin, end, std::move(value));
+        add(spec, std::move(array));
     }
 
     // Sets the particle count of every stored field (new particles get each field's fill).

@@ -2,7 +2,11 @@
 // The energy audit of a run (spec §10, §12): the work of external (body) forces and of the
 // contact kicks accumulated over the steps, and the balance at a level,
 //
-//   total = Σ ½ m |v^n|^2 + Π^n - W_external - W_contact,   drift = (total - total_0)/|total_0|.
+//   total = Σ ½ m |v^n|^2 + Π^n + D - W_external - W_contact,  drift = (total - total_0)/|total_0|,
+//
+// D the energy dissipated by the materials' committed plastic flow (docs/theory/plasticity.md
+// (P5.3)); Π^n of a material with history is its incremental energy, which holds the current
+// step's dissipation until the commit moves it into D.
 //
 // One owner: the run log's drift and the `energy` function object's table both read it.
 // Sums are serial, in particle order, so they do not depend on the number of threads.
@@ -24,6 +28,7 @@ public:
     {
         scalars.bind("externalWork", external_);
         scalars.bind("contactWork", contact_);
+        scalars.bind("dissipatedEnergy", dissipated_);
         scalars.bind("initialEnergy", initial_);
         scalars.bind("haveInitialEnergy", haveInitial_);
     }
@@ -39,6 +44,9 @@ public:
         }
         external_ += work;
     }
+
+    // Energy dissipated by a commit of the materials' history.
+    void addDissipation(double energy) { dissipated_ += energy; }
 
     // A contact kick Δv applied to v^{n+1/2} over a step dt: its work is
     // ΔW = Σ m Δv·(v^{n+1/2} + ½Δv + ½Δt a^{n+1}) (spec §12); the part known now is added now
@@ -84,7 +92,8 @@ public:
         e.strain = strainEnergy;
         e.external = external_;
         e.contact = contact_;
-        e.total = e.kinetic + e.strain - e.external - e.contact;
+        e.dissipated = dissipated_;
+        e.total = e.kinetic + e.strain + e.dissipated - e.external - e.contact;
         if (!haveInitial_)
         {
             initial_ = e.total;
@@ -98,6 +107,7 @@ public:
 private:
     double external_ = 0.0;
     double contact_ = 0.0;
+    double dissipated_ = 0.0;
     double initial_ = 0.0;
     bool haveInitial_ = false;
     bool pendingKick_ = false; // a kick whose a^{n+1} part is still to be added

@@ -77,6 +77,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         {
             break;
         }
+        commitHistory();
         drift(dt);
         applyContact(dt);
         checkOrder(dt);
@@ -109,6 +110,40 @@ void Simulation<D>::writeLevel(RunLog& log, const FunctionState& functionState)
     outputSchedule_.written(time_, integrator_->deltaT());
     log.addOutputSeconds(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
+// Each body's material commits its particles' state at F^n, in chunks in parallel; the
+// dissipation is summed in chunk order (independent of the thread count).
+template <int D>
+void Simulation<D>::commitHistory()
+{
+    if (!historyMaterials_)
+    {
+        return;
+    }
+    const std::size_t chunk = 256;
+    for (std::size_t b = 0; b < particles_.bodies.size(); ++b)
+    {
+        if (!materials_[b]->hasHistory())
+        {
+            continue;
+        }
+        const BodyRange& range = particles_.bodies[b];
+        const std::size_t chunks = (range.size() + chunk - 1) / chunk;
+        std::vector<double> dissipated(chunks, 0.0);
+        Material<D>& material = *materialModels_[b];
+#pragma omp parallel for schedule(static) if (useThreads(range.size()))
+        for (std::size_t i = 0; i < chunks; ++i)
+        {
+            const std::size_t first = range.begin + i * chunk;
+            const std::size_t count = std::min(chunk, range.end - first);
+            dissipated[i] = material.commit(&particles_.F[first], &particles_.V0[first], first, count);
+        }
+        for (const double energy : dissipated)
+        {
+            audit_.addDissipation(energy);
+        }
+    }
 }
 
 // x is the reference configuration bitwise (f = I exactly) when the reference was just moved

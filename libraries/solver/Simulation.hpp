@@ -8,6 +8,9 @@
 //   time step   Δt_n (the time integrator: α h / max c when due, collapse check)
 //   observe     v^n, the energy audit, the function objects, the progress line
 //   output      VTK when due (the last good level is remembered for a failure)
+//   commit      materials with history commit their state at F^n (after the output, so the
+//               file of level n holds the state the forces at x^n used: a restart recomputes
+//               them bit-identically; docs/theory/plasticity.md §P7)
 //   drift       x^{n+1}, v^{n+1/2} (the time integrator); gravity work
 //   contact     Δv on v^{n+1/2} at x^{n+1} (spec §9, §12)
 //   order       1D: particles must not pass each other
@@ -83,6 +86,7 @@ private:
                  double strainEnergy, bool wantEnergy,  // function objects, progress line
                  bool progress, long firstStep);
     void writeLevel(RunLog& log, const FunctionState& functionState); // registries -> VTK/
+    void commitHistory();                         // F^n -> the materials' history; D
     void drift(double dt);                        // x^n, v, a^n -> x^{n+1}, v^{n+1/2}; W_g
     void applyContact(double dt);                 // x^{n+1}, F(x^{n+1}) -> Δv, W_contact
     void checkOrder(double dt);                   // 1D: x^{n+1} -> failure if out of order
@@ -116,6 +120,7 @@ private:
     std::unique_ptr<Kernel> kernel_;
     std::vector<std::unique_ptr<Material<D>>> materialModels_;
     std::vector<const Material<D>*> materials_;
+    bool historyMaterials_ = false; // some body's material keeps a per-particle history
     std::unique_ptr<Formulation<D>> formulation_;
     std::unique_ptr<Stabilisation<D>> scheme_;
     std::unique_ptr<Contact<D>> contact_;

@@ -26,7 +26,7 @@ WaveSpeedBound Simulation<D>::waveSpeedBound() const
         {
             const std::size_t first = range.begin + static_cast<std::size_t>(i) * chunk;
             const std::size_t count = std::min(chunk, range.end - first);
-            c = std::max(c, materials_[b]->maxWaveSpeed(&particles_.F[first], count));
+            c = std::max(c, materials_[b]->maxWaveSpeed(&particles_.F[first], count, first));
         }
         return c;
     };
@@ -51,7 +51,7 @@ WaveSpeedBound Simulation<D>::waveSpeedBound() const
         double best = -1.0;
         for (std::size_t a = range.begin; a < range.end; ++a)
         {
-            const double ca = materials_[body]->waveSpeed(particles_.F[a]);
+            const double ca = materials_[body]->maxWaveSpeed(&particles_.F[a], 1, a);
             if (!(ca <= best))
             {
                 best = ca;

@@ -217,8 +217,10 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
         }
         const Dictionary& dict = entry->dict();
         const Params p = bodySchema().validate(dict, "a body", D, TypeEntry::isKey);
-        materialModels_.push_back(selectModel<Material<D>>(p.dict("material"), {&fields_, particles_.bodies[b]}, D));
+        materialModels_.push_back(selectModel<Material<D>>(
+            p.dict("material"), {&fields_, particles_.bodies[b], &particles_.F}, D));
         materials_.push_back(materialModels_.back().get());
+        historyMaterials_ = historyMaterials_ || materials_.back()->hasHistory();
         const BodyRange& range = particles_.bodies[b];
         const Vec<D> velocity = toVec<D>(p.vector("velocity"));
         for (std::size_t a = range.begin; a < range.end; ++a)

@@ -232,7 +232,8 @@ public:
                 const std::size_t count = chunk.end - chunk.begin;
                 psi.resize(count);
                 in.materials[chunk.body]->evaluate(&out.F[chunk.begin], &out.P[chunk.begin],
-                                                   wantEnergy ? psi.data() : nullptr, count);
+                                                   wantEnergy ? psi.data() : nullptr, count,
+                                                   HistoryOf::particles(chunk.begin));
                 for (std::size_t a = chunk.begin; a < chunk.end; ++a)
                 {
                     UL_[a] = in.V0[a] * out.P[a] * in.ref.F[a].transpose() * gradients.L(a);
@@ -265,7 +266,10 @@ public:
             const Material<D>& material = *in.materials[b];
             for (std::size_t a = range.begin; a < range.end; ++a)
             {
-                total += in.V0[a] * material.energy(F[a]);
+                Mat<D> P;
+                double psi;
+                material.evaluate(&F[a], &P, &psi, 1, HistoryOf::particles(a));
+                total += in.V0[a] * psi;
             }
         }
         return total;

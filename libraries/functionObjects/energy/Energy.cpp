@@ -1,10 +1,13 @@
 // `energy`: the energy balance with the scheme's own discrete energy Π (spec §10).
-// Columns: kinetic strain external contact total drift, where
+// Columns: kinetic strain external contact dissipated total drift, where
 //   kinetic  = Σ ½ m |v^n|^2 (v^n = ½(v^{n-1/2} + v^{n+1/2})),
-//   strain   = Π(x^n) of the selected scheme,
+//   strain   = Π(x^n) of the selected scheme (with plastic materials: the incremental energy,
+//              docs/theory/plasticity.md (P4.2)),
 //   external = work done by external (body) forces since t = 0,
 //   contact  = work done by contact forces since t = 0,
-//   total    = kinetic + strain - external - contact  (conserved by an exact integrator),
+//   dissipated = energy dissipated by plastic flow since t = 0 (0 for elastic materials),
+//   total    = kinetic + strain + dissipated - external - contact  (conserved by an exact
+//              integrator),
 //   drift    = (total - total(0)) / |total(0)|,
 //   momentum_x .. (Σ m v) and, in 2D/3D, angularMomentum (Σ m x × v; _x _y _z in 3D):
 //   conserved by the internal forces and the contact kick, changed by fixed particles and
@@ -26,15 +29,15 @@ public:
     static std::string description()
     {
         return "Energy balance: kinetic, strain (the scheme's own energy), external and contact "
-               "work, total and its relative drift.";
+               "work, plastic dissipation, total and its relative drift.";
     }
     static Schema schema() { return FunctionObjectModel<D>::commonSchema(); }
 
     Energy(const Params& params, const typename FunctionObject<D>::Args& args)
         : FunctionObjectModel<D>(params, args)
     {
-        std::vector<std::string> columns{"kinetic", "strain", "external",
-                                         "contact", "total",  "drift"};
+        std::vector<std::string> columns{"kinetic", "strain",     "external", "contact",
+                                         "dissipated", "total", "drift"};
         static const char* axes[3] = {"x", "y", "z"};
         for (int d = 0; d < D; ++d)
         {
@@ -72,7 +75,8 @@ public:
         {
             maxStrainRatio_ = std::max(maxStrainRatio_, e.strain / e.kinetic);
         }
-        std::vector<double> row{e.kinetic, e.strain, e.external, e.contact, e.total, e.drift};
+        std::vector<double> row{e.kinetic,    e.strain, e.external, e.contact,
+                                e.dissipated, e.total,  e.drift};
         const ParticleSet<D>& p = state.particles;
         Vec<D> momentum = Vec<D>::Zero();
         Eigen::Vector3d angular = Eigen::Vector3d::Zero();

@@ -257,8 +257,10 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 {
                     scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
                 }
+                // Every sample uses a's committed history (docs/theory/plasticity.md §P7).
                 material.evaluate(scratch.F.data(), scratch.P.data(),
-                                  wantEnergy ? scratch.psi.data() : nullptr, count);
+                                  wantEnergy ? scratch.psi.data() : nullptr, count,
+                                  HistoryOf::around(a));
                 out.P[a] = scratch.P[0]; // b = a: F_a(a) = F_a
                 // S_a = Σ Ŵ P_b,  Q_a[k] = Σ Ŵ x^r_ba,k P_b
                 Mat<D> S = Mat<D>::Zero();
@@ -335,7 +337,11 @@ double GradF<D>::energy(const ForceInput<D>& in)
             for (std::size_t k = list.begin(a); k < list.end(a); ++k)
             {
                 const Vec<D> xr = ref.x[list.indices[k]] - ref.x[a];
-                sum += weight(ref, a, k) * material.energy(kin.F + kin.G.contract(xr));
+                const Mat<D> Fb = kin.F + kin.G.contract(xr);
+                Mat<D> P;
+                double psi;
+                material.evaluate(&Fb, &P, &psi, 1, HistoryOf::around(a));
+                sum += weight(ref, a, k) * psi;
             }
             total += in.V0[a] * sum;
         }

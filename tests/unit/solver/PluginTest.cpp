@@ -53,7 +53,7 @@ TEST_CASE("lists of valid types come from the registry: a plugin's models appear
     {
         CHECK_THAT(error.message(), Catch::Contains("missing required key 'material' in 'bar'"));
         CHECK_THAT(std::string(error.what()),
-                   Catch::Contains("{ type linearElastic | neoHookean | pluginLinear | "
+                   Catch::Contains("{ type hencky | j2Plasticity | linearElastic | neoHookean | pluginLinear | "
                                    "stVenantKirchhoff; rho ...; ... }"));
     }
     // The case dictionaries' documentation lists the plugin's function object as well.

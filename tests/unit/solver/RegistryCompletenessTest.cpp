@@ -37,9 +37,9 @@ const std::map<std::string, std::map<int, Names>>& expected()
     static const std::map<std::string, std::map<int, Names>> table{
         {"kernel", {{0, {"cubicSpline", "quinticSpline", "wendlandC2"}}}},
         {"material",
-         {{1, {"linearElastic", "neoHookean", "stVenantKirchhoff"}},
-          {2, {"linearElastic", "neoHookean", "stVenantKirchhoff"}},
-          {3, {"linearElastic", "neoHookean", "stVenantKirchhoff"}}}},
+         {{1, {"hencky", "j2Plasticity", "linearElastic", "neoHookean", "stVenantKirchhoff"}},
+          {2, {"hencky", "j2Plasticity", "linearElastic", "neoHookean", "stVenantKirchhoff"}},
+          {3, {"hencky", "j2Plasticity", "linearElastic", "neoHookean", "stVenantKirchhoff"}}}},
         {"formulation",
          {{1, {"totalLagrangian", "updatedLagrangian"}},
           {2, {"totalLagrangian", "updatedLagrangian"}},
