@@ -1,8 +1,11 @@
 #pragma once
-// The energy audit of a run (spec §10, §12): the work of external (body) forces and of the
-// contact kicks accumulated over the steps, and the balance at a level,
+// The energy audit of a run (spec §10, §12): the work of external (body) forces, of the
+// contact kicks and of each rigid wall accumulated over the steps, and the balance at a level,
 //
-//   total = Σ ½ m |v^n|^2 + Π^n - W_external - W_contact,   drift = (total - total_0)/|total_0|.
+//   total = Σ ½ m |v^n|^2 + Π^n + Φ^n - W_external - W_contact - W_walls,
+//   drift = (total - total_0)/|total_0|,
+//
+// with Φ the walls' stored potential and W_walls their work (walls/WallSet.hpp).
 //
 // One owner: the run log's drift and the `energy` function object's table both read it.
 // Sums are serial, in particle order, so they do not depend on the number of threads.
@@ -11,6 +14,7 @@
 #include "functionObjects/FunctionObject.hpp"
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace sph
@@ -20,13 +24,28 @@ template <int D>
 class EnergyAudit
 {
 public:
-    void declareState(RunScalars& scalars)
+    void declareState(RunScalars& scalars, const std::vector<std::string>& wallNames = {})
     {
         scalars.bind("externalWork", external_);
         scalars.bind("contactWork", contact_);
         scalars.bind("initialEnergy", initial_);
         scalars.bind("haveInitialEnergy", haveInitial_);
+        wallWork_.assign(wallNames.size(), 0.0); // not resized again: the scalars point into it
+        for (std::size_t w = 0; w < wallNames.size(); ++w)
+        {
+            scalars.bind("wallWork:" + wallNames[w], wallWork_[w]);
+        }
     }
+
+    // Work done by each wall on the solid over a step, or part of one (walls/WallSet.hpp).
+    void addWallWork(const std::vector<double>& work)
+    {
+        for (std::size_t w = 0; w < wallWork_.size(); ++w)
+        {
+            wallWork_[w] += work[w];
+        }
+    }
+    const std::vector<double>& wallWork() const { return wallWork_; }
 
     // Work of a constant body force g over the drift x^n -> x^{n+1}: Σ m g·(x^{n+1} - x^n).
     void addGravityWork(const std::vector<double>& m, const Vec<D>& g,
@@ -71,10 +90,10 @@ public:
         pendingKick_ = false;
     }
 
-    // The balance at a level with velocities v^n and strain energy Π^n; the first balance of
-    // a run is the reference of the drift.
+    // The balance at a level with velocities v^n, strain energy Π^n and wall potential Φ^n;
+    // the first balance of a run is the reference of the drift.
     EnergyBalance balance(const std::vector<double>& m, const std::vector<Vec<D>>& velocity,
-                          double strainEnergy)
+                          double strainEnergy, double wallPotential = 0.0)
     {
         EnergyBalance e;
         for (std::size_t a = 0; a < m.size(); ++a)
@@ -84,7 +103,12 @@ public:
         e.strain = strainEnergy;
         e.external = external_;
         e.contact = contact_;
-        e.total = e.kinetic + e.strain - e.external - e.contact;
+        e.wallPotential = wallPotential;
+        for (const double work : wallWork_)
+        {
+            e.wallWork += work;
+        }
+        e.total = e.kinetic + e.strain + e.wallPotential - e.external - e.contact - e.wallWork;
         if (!haveInitial_)
         {
             initial_ = e.total;
@@ -98,6 +122,7 @@ public:
 private:
     double external_ = 0.0;
     double contact_ = 0.0;
+    std::vector<double> wallWork_; // by wall
     double initial_ = 0.0;
     bool haveInitial_ = false;
     bool pendingKick_ = false; // a kick whose a^{n+1} part is still to be added

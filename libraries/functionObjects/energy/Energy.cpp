@@ -4,7 +4,10 @@
 //   strain   = Π(x^n) of the selected scheme,
 //   external = work done by external (body) forces since t = 0,
 //   contact  = work done by contact forces since t = 0,
-//   total    = kinetic + strain - external - contact  (conserved by an exact integrator),
+//   wallPotential, wallWork (only in a case with constant/walls) = Σ ½ k δ² of the walls and
+//              their work since t = 0: moving, removing, friction (walls/WallSet.hpp),
+//   total    = kinetic + strain + wallPotential - external - contact - wallWork  (conserved
+//              by an exact integrator),
 //   drift    = (total - total(0)) / |total(0)|,
 //   momentum_x .. (Σ m v) and, in 2D/3D, angularMomentum (Σ m x × v; _x _y _z in 3D):
 //   conserved by the internal forces and the contact kick, changed by fixed particles and
@@ -33,8 +36,13 @@ public:
     Energy(const Params& params, const typename FunctionObject<D>::Args& args)
         : FunctionObjectModel<D>(params, args)
     {
-        std::vector<std::string> columns{"kinetic", "strain", "external",
-                                         "contact", "total",  "drift"};
+        std::vector<std::string> columns{"kinetic", "strain", "external", "contact"};
+        withWalls_ = args.wallNames && !args.wallNames->empty();
+        if (withWalls_)
+        {
+            columns.insert(columns.end(), {"wallPotential", "wallWork"});
+        }
+        columns.insert(columns.end(), {"total", "drift"});
         static const char* axes[3] = {"x", "y", "z"};
         for (int d = 0; d < D; ++d)
         {
@@ -72,7 +80,12 @@ public:
         {
             maxStrainRatio_ = std::max(maxStrainRatio_, e.strain / e.kinetic);
         }
-        std::vector<double> row{e.kinetic, e.strain, e.external, e.contact, e.total, e.drift};
+        std::vector<double> row{e.kinetic, e.strain, e.external, e.contact};
+        if (withWalls_)
+        {
+            row.insert(row.end(), {e.wallPotential, e.wallWork});
+        }
+        row.insert(row.end(), {e.total, e.drift});
         const ParticleSet<D>& p = state.particles;
         Vec<D> momentum = Vec<D>::Zero();
         Eigen::Vector3d angular = Eigen::Vector3d::Zero();
@@ -122,6 +135,7 @@ public:
     }
 
 private:
+    bool withWalls_ = false; // the case has constant/walls: their columns
     double lastDeltaT_ = 0.0;
     double drift_ = 0.0;
     double maxDrift_ = 0.0;
