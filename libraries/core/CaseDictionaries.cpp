@@ -16,7 +16,8 @@ const std::map<std::string, std::string>& knownFiles()
                                                           {"sphSchemes", "system/sphSchemes"},
                                                           {"particlesDict", "system/particlesDict"},
                                                           {"studyDict", "system/studyDict"},
-                                                          {"bodies", "constant/bodies"}};
+                                                          {"bodies", "constant/bodies"},
+                                                          {"walls", "constant/walls"}};
     return files;
 }
 

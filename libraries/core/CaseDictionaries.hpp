@@ -3,7 +3,7 @@
 //
 //   controlDict   -> system/controlDict       sphSchemes -> system/sphSchemes
 //   particlesDict -> system/particlesDict     studyDict  -> system/studyDict
-//   bodies        -> constant/bodies
+//   bodies        -> constant/bodies         walls      -> constant/walls (optional)
 //
 // -set path.to.key=value: the first component may name one of the files (controlDict.endTime);
 // otherwise the file whose top level holds that key is used. Intermediate components must be

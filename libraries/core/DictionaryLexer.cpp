@@ -3,6 +3,7 @@
 #include "InputError.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 
 namespace sph
@@ -17,7 +18,8 @@ bool isDelimiter(char c)
            c == ')' || c == ';' || c == '"';
 }
 
-// A word is a number when the whole of it reads as one (decimal only: no hex, inf or nan).
+// A word is a number when the whole of it reads as one (decimal only: no hex, inf or nan) and
+// is finite (1e999 overflows to inf: a word, which no real-valued key accepts).
 bool readNumber(const std::string& text, double& value)
 {
     const char first = text.front();
@@ -36,7 +38,7 @@ bool readNumber(const std::string& text, double& value)
     }
     char* end = nullptr;
     value = std::strtod(text.c_str(), &end);
-    return end == text.c_str() + text.size();
+    return end == text.c_str() + text.size() && std::isfinite(value);
 }
 
 } // namespace

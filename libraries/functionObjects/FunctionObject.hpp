@@ -28,8 +28,8 @@ namespace sph
 {
 
 // The energy balance at a time level (spec §10), kept by the solver's energy audit:
-//   total = kinetic + strain + dissipated - external - contact, conserved by an exact
-//   integrator;
+//   total = kinetic + strain + wallPotential + dissipated - external - contact - wallWork,
+//   conserved by an exact integrator;
 //   drift = (total - total at the first level) / |total at the first level|.
 struct EnergyBalance
 {
@@ -38,8 +38,20 @@ struct EnergyBalance
     double external = 0.0; // work of external (body) forces since t = 0
     double contact = 0.0;  // work of contact forces since t = 0
     double dissipated = 0.0; // energy dissipated by plastic flow since t = 0 (committed levels)
+    double wallPotential = 0.0; // Σ ½ k δ² of the rigid walls (walls/WallSet.hpp)
+    double wallWork = 0.0; // work of the walls since t = 0: moving, removing, friction
     double total = 0.0;
     double drift = 0.0;
+};
+
+// The rigid walls (constant/walls) at a time level, by wall.
+template <int D>
+struct WallLoads
+{
+    std::vector<std::string> names;
+    std::vector<Vec<D>> force;       // Σ_a (F_n + F_t): the force the wall exerts on the solid
+    std::vector<double> normalForce; // Σ_a |F_n|
+    std::vector<double> work;        // its work on the solid since t = 0 (the energy audit's)
 };
 
 // What a function object sees at time level n (after the forces at x^n).
@@ -57,6 +69,8 @@ struct StepState
     // The energy balance of this level; null unless some function object (needsEnergy) or
     // the run log asked for it (the strain energy costs a little in every scheme).
     const EnergyBalance* energy = nullptr;
+    // The walls' loads of this level (after the wall forces at x^n); null without walls.
+    const WallLoads<D>* walls = nullptr;
 };
 
 template <int D>
@@ -75,6 +89,7 @@ public:
         // Where a function object declares per-particle fields of its own (history it keeps
         // per particle: written, restarted and listed by -listTypes with no solver edit).
         ParticleFields<D>* fields = nullptr;
+        const std::vector<std::string>* wallNames = nullptr; // constant/walls, in order
     };
 
     virtual ~FunctionObject() = default;

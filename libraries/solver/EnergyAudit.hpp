@@ -1,10 +1,12 @@
 #pragma once
-// The energy audit of a run (spec §10, §12): the work of external (body) forces and of the
-// contact kicks accumulated over the steps, and the balance at a level,
+// The energy audit of a run (spec §10, §12): the work of external (body) forces, of the
+// contact kicks and of each rigid wall accumulated over the steps, and the balance at a level,
 //
-//   total = Σ ½ m |v^n|^2 + Π^n + D - W_external - W_contact,  drift = (total - total_0)/|total_0|,
+//   total = Σ ½ m |v^n|^2 + Π^n + Φ^n + D - W_external - W_contact - W_walls,
+//   drift = (total - total_0)/|total_0|,
 //
-// D the energy dissipated by the materials' committed plastic flow (docs/theory/plasticity.md
+// with Φ the walls' stored potential and W_walls their work (walls/WallSet.hpp), and D the
+// energy dissipated by the materials' committed plastic flow (docs/theory/plasticity.md
 // (P5.3)); Π^n of a material with history is its incremental energy, which holds the current
 // step's dissipation until the commit moves it into D.
 //
@@ -15,6 +17,7 @@
 #include "functionObjects/FunctionObject.hpp"
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace sph
@@ -24,14 +27,29 @@ template <int D>
 class EnergyAudit
 {
 public:
-    void declareState(RunScalars& scalars)
+    void declareState(RunScalars& scalars, const std::vector<std::string>& wallNames = {})
     {
         scalars.bind("externalWork", external_);
         scalars.bind("contactWork", contact_);
         scalars.bind("dissipatedEnergy", dissipated_);
         scalars.bind("initialEnergy", initial_);
         scalars.bind("haveInitialEnergy", haveInitial_);
+        wallWork_.assign(wallNames.size(), 0.0); // not resized again: the scalars point into it
+        for (std::size_t w = 0; w < wallNames.size(); ++w)
+        {
+            scalars.bind("wallWork:" + wallNames[w], wallWork_[w]);
+        }
     }
+
+    // Work done by each wall on the solid over a step, or part of one (walls/WallSet.hpp).
+    void addWallWork(const std::vector<double>& work)
+    {
+        for (std::size_t w = 0; w < wallWork_.size(); ++w)
+        {
+            wallWork_[w] += work[w];
+        }
+    }
+    const std::vector<double>& wallWork() const { return wallWork_; }
 
     // Work of a constant body force g over the drift x^n -> x^{n+1}: Σ m g·(x^{n+1} - x^n).
     void addGravityWork(const std::vector<double>& m, const Vec<D>& g,
@@ -79,10 +97,10 @@ public:
         pendingKick_ = false;
     }
 
-    // The balance at a level with velocities v^n and strain energy Π^n; the first balance of
-    // a run is the reference of the drift.
+    // The balance at a level with velocities v^n, strain energy Π^n and wall potential Φ^n;
+    // the first balance of a run is the reference of the drift.
     EnergyBalance balance(const std::vector<double>& m, const std::vector<Vec<D>>& velocity,
-                          double strainEnergy)
+                          double strainEnergy, double wallPotential = 0.0)
     {
         EnergyBalance e;
         for (std::size_t a = 0; a < m.size(); ++a)
@@ -92,8 +110,14 @@ public:
         e.strain = strainEnergy;
         e.external = external_;
         e.contact = contact_;
+        e.wallPotential = wallPotential;
+        for (const double work : wallWork_)
+        {
+            e.wallWork += work;
+        }
         e.dissipated = dissipated_;
-        e.total = e.kinetic + e.strain + e.dissipated - e.external - e.contact;
+        e.total = e.kinetic + e.strain + e.wallPotential + e.dissipated - e.external - e.contact -
+                  e.wallWork;
         if (!haveInitial_)
         {
             initial_ = e.total;
@@ -108,6 +132,7 @@ private:
     double external_ = 0.0;
     double contact_ = 0.0;
     double dissipated_ = 0.0;
+    std::vector<double> wallWork_; // by wall
     double initial_ = 0.0;
     bool haveInitial_ = false;
     bool pendingKick_ = false; // a kick whose a^{n+1} part is still to be added

@@ -56,9 +56,10 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         const bool progress = log.progressDue();
         const bool wantEnergy = progress || energyWanted(firstStep);
         const ForceStatus forces = computeForces(atReference, wantEnergy);
-        accelerate();
-        audit_.completeContactWork(particles_.m, contactDeltaV_, acceleration_);
         chooseTimeStep(step_ == firstStep && !restarted, step_ == firstStep);
+        accelerate();
+        applyWalls();
+        audit_.completeContactWork(particles_.m, contactDeltaV_, acceleration_);
         // The run ends at the first level at or after endTime (no shortened last step: a run
         // stopped early follows the same trajectory, so restarts continue bit-identically).
         const bool last = time_ >= control_.endTime * (1.0 - 1e-12) ||
@@ -204,6 +205,19 @@ void Simulation<D>::accelerate()
     }
 }
 
+// The walls act as forces at x^n, t^n (walls/WallSet.hpp), so the leapfrog integrates them like
+// the internal forces; the friction work of the last drift is completed with F_t^n.
+template <int D>
+void Simulation<D>::applyWalls()
+{
+    if (walls_->empty())
+    {
+        return;
+    }
+    walls_->applyForces(particles_, particles_.v, time_, integrator_->deltaT(), acceleration_);
+    audit_.addWallWork(walls_->completeFrictionWork(particles_.x, previousX_));
+}
+
 template <int D>
 void Simulation<D>::chooseTimeStep(bool freshStart, bool firstLevel)
 {
@@ -227,11 +241,17 @@ void Simulation<D>::observe(RunLog& log, double dt, double strainEnergy, bool wa
     EnergyBalance balance;
     if (wantEnergy)
     {
-        balance = audit_.balance(particles_.m, velocitySync_, strainEnergy);
+        balance = audit_.balance(particles_.m, velocitySync_, strainEnergy, walls_->potential());
+    }
+    WallLoads<D> walls;
+    if (!walls_->empty())
+    {
+        walls = walls_->loads();
+        walls.work = audit_.wallWork();
     }
     const StepState<D> state{step_,       time_,      dt,        particles_,
                              velocitySync_, reference_->reference(), *kernel_, bodyNames_,
-                             wantEnergy ? &balance : nullptr};
+                             wantEnergy ? &balance : nullptr, walls_->empty() ? nullptr : &walls};
     for (auto& object : functionObjects_)
     {
         object->execute(state);
@@ -250,6 +270,10 @@ void Simulation<D>::drift(double dt)
     if (!gravity_.isZero())
     {
         audit_.addGravityWork(particles_.m, gravity_, particles_.x, previousX_);
+    }
+    if (!walls_->empty())
+    {
+        audit_.addWallWork(walls_->driftWork(particles_, previousX_, time_, dt));
     }
 }
 

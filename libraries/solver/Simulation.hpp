@@ -4,8 +4,9 @@
 //
 //   reference   move the reference configuration to x^n when the formulation says so
 //   forces      T^n, F^n, P^n (and Π^n when wanted) at x^n
-//   accelerate  a^n = T^n/m + g; fixed particles none
 //   time step   Δt_n (the time integrator: α h / max c when due, collapse check)
+//   accelerate  a^n = T^n/m + g; fixed particles none
+//   walls       a^n += F_wall/m at x^n, t^n (friction needs Δt_n); the walls' work
 //   observe     v^n, the energy audit, the function objects, the progress line
 //   output      VTK when due (the last good level is remembered for a failure)
 //   commit      materials with history commit their state at F^n (after the output, so the
@@ -31,6 +32,7 @@
 #include "solver/RunLog.hpp"
 #include "solver/StateFile.hpp"
 #include "timeIntegration/TimeIntegration.hpp"
+#include "walls/WallSet.hpp"
 
 #include <memory>
 #include <string>
@@ -66,6 +68,7 @@ private:
     // SimulationSetup.cpp
     void loadParticles(const InitialParticles& initial);
     void setupBodies(const Dictionary& bodies);
+    void setupWalls();
     void setupFunctionObjects();
     void checkCrossingOrder();
 
@@ -78,6 +81,8 @@ private:
     ForceStatus computeForces(bool atReference,   // x^n, reference -> T (in acceleration_),
                               bool wantEnergy);   //   F^n, P^n, Π^n
     void accelerate();                            // T, m, g, fixed -> a^n (in place)
+    void applyWalls();                            // x^n, v^{n-1/2}, a, Δt_n -> a^n += F_wall/m,
+                                                  //   Φ^n, wall loads; W_walls (friction)
     void chooseTimeStep(bool freshStart,          // F^n -> the integrator's Δt_n
                         bool firstLevel);
     void checkRunLength(double deltaT) const;     // Δt_0 against endTime and writeInterval
@@ -87,7 +92,8 @@ private:
                  bool progress, long firstStep);
     void writeLevel(RunLog& log, const FunctionState& functionState); // registries -> VTK/
     void commitHistory();                         // F^n -> the materials' history; D
-    void drift(double dt);                        // x^n, v, a^n -> x^{n+1}, v^{n+1/2}; W_g
+    void drift(double dt);                        // x^n, v, a^n -> x^{n+1}, v^{n+1/2}; W_g,
+                                                  //   W_walls (motion, friction)
     void applyContact(double dt);                 // x^{n+1}, F(x^{n+1}) -> Δv, W_contact
     void checkOrder(double dt);                   // 1D: x^{n+1} -> failure if out of order
     WaveSpeedBound waveSpeedBound() const;
@@ -124,6 +130,7 @@ private:
     std::unique_ptr<Formulation<D>> formulation_;
     std::unique_ptr<Stabilisation<D>> scheme_;
     std::unique_ptr<Contact<D>> contact_;
+    std::unique_ptr<WallSet<D>> walls_; // constant/walls (empty without the file)
     std::unique_ptr<TimeIntegration<D>> integrator_;
     std::vector<std::unique_ptr<FunctionObject<D>>> functionObjects_;
     std::unique_ptr<ReferenceManager<D>> reference_;

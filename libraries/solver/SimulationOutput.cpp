@@ -184,7 +184,7 @@ void Simulation<D>::declareFields()
     }
     integrator_->attach(p.v, fields_, runScalars_);
     reference_->declareFields(fields_, runScalars_);
-    audit_.declareState(runScalars_);
+    audit_.declareState(runScalars_, walls_->names());
     runScalars_.bind("outputIndex", outputIndex_);
     runScalars_.bind("nextOutputTime", outputSchedule_.next());
 }

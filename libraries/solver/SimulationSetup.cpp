@@ -94,6 +94,7 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
         {control.courant, control.timeStepUpdateInterval}, D, {"leapfrog", {}});
 
     setupBodies(dicts.get("bodies"));
+    setupWalls();
     checkCrossingOrder();
     setupFunctionObjects();
 
@@ -302,6 +303,24 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
     }
 }
 
+// The walls of constant/walls, and the bound of their stiffness on the time step: a particle
+// against a wall oscillates at ω = c0/s, so ω Δt <= courant hOverDx (walls/WallSet.hpp).
+template <int D>
+void Simulation<D>::setupWalls()
+{
+    walls_ = std::make_unique<WallSet<D>>(dicts_.has("walls") ? &dicts_.get("walls") : nullptr,
+                                          bodyNames_, materials_, spacing_);
+    const double omegaDeltaT = control_.courant * kernel_->hOverDx();
+    if (!walls_->empty() && omegaDeltaT >= 1.0)
+    {
+        throw InputError(dicts_.get("controlDict").find("courant")->valueLocation(),
+                         "with walls, courant x hOverDx (the bound of omega dt of a particle "
+                         "against a wall) must be below 1; it is " + formatNumber(omegaDeltaT),
+                         {"Lower courant below " + formatNumber(1.0 / kernel_->hOverDx()) +
+                          ": the walls are as stiff as the material (constant/walls)."});
+    }
+}
+
 template <int D>
 void Simulation<D>::checkCrossingOrder()
 {
@@ -342,6 +361,7 @@ void Simulation<D>::setupFunctionObjects()
         args.materials = &materials_;
         args.bodyNames = &bodyNames_;
         args.fields = &fields_;
+        args.wallNames = &walls_->names();
         functionObjects_.push_back(selectModel<FunctionObject<D>>(
             entry.dict(), args, D, Selection::withBodies(bodyNames_)));
     }
@@ -370,6 +390,15 @@ std::vector<std::string> Simulation<D>::describe() const
         lines.push_back("Body        " + bodyNames_[b] + ": " +
                         std::to_string(particles_.bodies[b].size()) + " particles (" +
                         std::to_string(fixed) + " fixed), " + materials_[b]->summary());
+    }
+    for (const auto& wall : walls_->describe())
+    {
+        lines.push_back("Wall        " + wall);
+    }
+    if (!walls_->empty())
+    {
+        lines.push_back("Walls       stiffness rho0 c0^2 V0 / s^2: omega dt <= courant hOverDx = " +
+                        formatNumber(control_.courant * kernel_->hOverDx()));
     }
     std::ostringstream time;
     time << "Time        endTime " << control_.endTime << " s, courant " << control_.courant

@@ -96,7 +96,7 @@ int sphSolidMain(int argc, const char* const* argv)
     }
 
     CaseDictionaries dicts(caseDir);
-    dicts.read({"controlDict", "sphSchemes", "bodies"}, {"particlesDict"});
+    dicts.read({"controlDict", "sphSchemes", "bodies"}, {"particlesDict", "walls"});
     dicts.applySets(commandLine.sets());
     std::cout << "sphSolid " << projectVersion() << "  (" << commandLine.invocation() << ")\n"
               << "Threads     " << omp_get_max_threads() << "\n";

@@ -5,9 +5,12 @@
 //              docs/theory/plasticity.md (P4.2)),
 //   external = work done by external (body) forces since t = 0,
 //   contact  = work done by contact forces since t = 0,
-//   dissipated = energy dissipated by plastic flow since t = 0 (0 for elastic materials),
-//   total    = kinetic + strain + dissipated - external - contact  (conserved by an exact
-//              integrator),
+//   wallPotential, wallWork (only in a case with constant/walls) = Σ ½ k δ² of the walls and
+//              their work since t = 0: moving, removing, friction (walls/WallSet.hpp),
+//   dissipated (only when a material keeps a plastic history) = energy dissipated by plastic
+//              flow since t = 0,
+//   total    = kinetic + strain + wallPotential + dissipated - external - contact - wallWork
+//              (conserved by an exact integrator),
 //   drift    = (total - total(0)) / |total(0)|,
 //   momentum_x .. (Σ m v) and, in 2D/3D, angularMomentum (Σ m x × v; _x _y _z in 3D):
 //   conserved by the internal forces and the contact kick, changed by fixed particles and
@@ -36,8 +39,21 @@ public:
     Energy(const Params& params, const typename FunctionObject<D>::Args& args)
         : FunctionObjectModel<D>(params, args)
     {
-        std::vector<std::string> columns{"kinetic", "strain",     "external", "contact",
-                                         "dissipated", "total", "drift"};
+        std::vector<std::string> columns{"kinetic", "strain", "external", "contact"};
+        withWalls_ = args.wallNames && !args.wallNames->empty();
+        if (withWalls_)
+        {
+            columns.insert(columns.end(), {"wallPotential", "wallWork"});
+        }
+        for (const Material<D>* material : args.materials ? *args.materials : noMaterials())
+        {
+            withDissipation_ = withDissipation_ || material->hasHistory();
+        }
+        if (withDissipation_)
+        {
+            columns.push_back("dissipated");
+        }
+        columns.insert(columns.end(), {"total", "drift"});
         static const char* axes[3] = {"x", "y", "z"};
         for (int d = 0; d < D; ++d)
         {
@@ -75,8 +91,16 @@ public:
         {
             maxStrainRatio_ = std::max(maxStrainRatio_, e.strain / e.kinetic);
         }
-        std::vector<double> row{e.kinetic,    e.strain, e.external, e.contact,
-                                e.dissipated, e.total,  e.drift};
+        std::vector<double> row{e.kinetic, e.strain, e.external, e.contact};
+        if (withWalls_)
+        {
+            row.insert(row.end(), {e.wallPotential, e.wallWork});
+        }
+        if (withDissipation_)
+        {
+            row.push_back(e.dissipated);
+        }
+        row.insert(row.end(), {e.total, e.drift});
         const ParticleSet<D>& p = state.particles;
         Vec<D> momentum = Vec<D>::Zero();
         Eigen::Vector3d angular = Eigen::Vector3d::Zero();
@@ -126,6 +150,13 @@ public:
     }
 
 private:
+    bool withWalls_ = false; // the case has constant/walls: their columns
+    bool withDissipation_ = false; // a material keeps a plastic history: its column
+    static const std::vector<const Material<D>*>& noMaterials()
+    {
+        static const std::vector<const Material<D>*> none;
+        return none;
+    }
     double lastDeltaT_ = 0.0;
     double drift_ = 0.0;
     double maxDrift_ = 0.0;

@@ -73,3 +73,40 @@ TEST_CASE("restart continues bit-identically: 2D updated-Lagrangian gradF", "[re
     const auto split = test::writeBlockCase(two.path() / "block", schemes, 1e-3, 1e-4);
     checkRestart(whole, split, 1e-3, 0.45e-3, {"energy", "corner"});
 }
+
+TEST_CASE("restart continues bit-identically: 2D block against walls", "[restart][walls]")
+{
+    // A block sliding on a floor with friction, pushed by a moving wall that is removed at
+    // 0.5 ms; the split run is stopped after 10 of its 52 steps (maxSteps, t = 0.39 ms), in
+    // contact with both walls, and continued from that output. The wall work is a run scalar of the
+    // energy audit, the peak forces are the wallForce object's state.
+    const auto write = [](const std::filesystem::path& folder) {
+        return test::writeWallCase(
+            folder, 2, "block { type box; min (0 0); max (0.06 0.03); spacing 0.01; }",
+            "gravity (0 -9.81);\nblock { material $stiff; velocity (0.2 0); }",
+            "floor { type plane; point (0 0); normal (0 1); friction 0.3; }\n"
+            "pusher { type plane; point (0 0); normal (1 0); velocity (0.5 0); removeAt 5e-4; }",
+            2e-3, 0.3);
+    };
+    test::TempDir one;
+    test::TempDir two;
+    const auto whole = write(one.path() / "walls");
+    const auto split = write(two.path() / "walls");
+    REQUIRE(test::runParticles(whole) == 0);
+    REQUIRE(test::runSolver(whole) == 0);
+    REQUIRE(test::runParticles(split) == 0);
+    REQUIRE(test::runSolver(split, {"-set", "controlDict.maxSteps=10"}) == 0);
+    REQUIRE(test::runSolver(split, {"-set", "controlDict.startFrom=latestTime"}) == 0);
+    const VtuData last = lastOutput(whole);
+    test::requireIdenticalState(last, lastOutput(split));
+    CHECK(last.fieldData.at("restart:wallWork:floor").values.at(0) < 0.0);  // friction
+    CHECK(last.fieldData.at("restart:wallWork:pusher").values.at(0) > 0.0); // pushed
+    for (const std::string table : {"energy", "walls"})
+    {
+        INFO(table);
+        CHECK(fileText(whole / "postProcessing" / table / (table + ".dat")) ==
+              fileText(split / "postProcessing" / table / (table + ".dat")));
+    }
+    CHECK(test::summaryValue(whole, "functions/walls/pusher_peakNormalForce") ==
+          test::summaryValue(split, "functions/walls/pusher_peakNormalForce"));
+}

@@ -33,6 +33,30 @@ inline std::filesystem::path writeBlockCase(const std::filesystem::path& folder,
     return folder;
 }
 
+// A small block of stiff linear-elastic material (c0 = 116 m/s, spacing 1 cm) against rigid
+// walls, with the `energy` and `wallForce` (named `walls`) tables written every step.
+// `particles` and `bodies` are the bodies of system/particlesDict and constant/bodies;
+// `walls` is constant/walls.
+inline std::filesystem::path writeWallCase(const std::filesystem::path& folder, int dimension,
+                                           const std::string& particles,
+                                           const std::string& bodies, const std::string& walls,
+                                           double endTime, double courant = 0.3)
+{
+    std::filesystem::create_directories(folder / "system");
+    std::filesystem::create_directories(folder / "constant");
+    std::ofstream(folder / "system" / "controlDict")
+        << "endTime " << endTime << ";\ncourant " << courant << ";\nwriteInterval " << endTime
+        << ";\nfunctions\n{\n    energy { type energy; }\n    walls { type wallForce; }\n}\n";
+    std::ofstream(folder / "system" / "sphSchemes")
+        << "dimension " << dimension << ";\nkernel { type cubicSpline; hOverDx 1.5; }\n"
+        << "formulation { type totalLagrangian; }\nstabilisation { type none; }\n";
+    std::ofstream(folder / "system" / "particlesDict") << particles << "\n";
+    std::ofstream(folder / "constant" / "bodies")
+        << "stiff { type linearElastic; E 1e7; nu 0.3; rho 1000; }\n" << bodies << "\n";
+    std::ofstream(folder / "constant" / "walls") << walls << "\n";
+    return folder;
+}
+
 // Two outputs hold the same state bit for bit: the points, every point array (display and
 // restart alike) and every number of the field data.
 inline void requireIdenticalState(const VtuData& a, const VtuData& b)
