@@ -137,6 +137,7 @@ struct DeformedReference
 template <int D>
 struct SchemeFixture
 {
+    ParticleFields<D> fields; // a material's history (plastic models), one entry per point
     std::unique_ptr<Kernel> kernel;
     std::unique_ptr<Material<D>> material;
     std::unique_ptr<Stabilisation<D>> scheme;
@@ -157,7 +158,8 @@ struct SchemeFixture
         V0.assign(n, 1.0);
         body.assign(n, 0);
         bodies = {BodyRange{"body", 0, n}};
-        material = build<Material<D>>(materialText, {}, D);
+        fields.setSize(n);
+        material = build<Material<D>>(materialText, {&fields, bodies[0], nullptr}, D);
         materials = {material.get()};
         double spacing = 1.0;
         ref.x = points;
@@ -204,6 +206,16 @@ struct SchemeFixture
         return T;
     }
     double energy(const std::vector<Vec<D>>& x) { return scheme->energy(input(x)); }
+    // Commits the material's history at positions x (as the solver does once per level).
+    double commit(const std::vector<Vec<D>>& x)
+    {
+        std::vector<Vec<D>> T;
+        std::vector<Mat<D>> F;
+        std::vector<Mat<D>> P;
+        ForceOutput<D> out{T, F, P};
+        REQUIRE(scheme->computeForces(input(x), out, false).ok());
+        return material->commit(F.data(), V0.data(), 0, F.size());
+    }
 };
 
 // A non-affine current configuration: x = (I + 0.15 R) x^r + 0.05 sin(x^r·w) + 0.03 noise.
