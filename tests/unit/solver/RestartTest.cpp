@@ -5,6 +5,7 @@
 #include "io/VtuFile.hpp"
 #include "solver/SolverCases.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -109,4 +110,40 @@ TEST_CASE("restart continues bit-identically: 2D block against walls", "[restart
     }
     CHECK(test::summaryValue(whole, "functions/walls/pusher_peakNormalForce") ==
           test::summaryValue(split, "functions/walls/pusher_peakNormalForce"));
+}
+
+TEST_CASE("restart continues bit-identically: 2D plastic impact, updated-Lagrangian gradF",
+          "[restart][plasticity]")
+{
+    // The plasticity2D/impact tutorial (1296 particles), stopped after 60 steps
+    // (flowing plastically against the wall) and continued: the plastic history (Cp^-1, alpha,
+    // committed after each output), the dissipated energy and every table continue bit for bit.
+    test::TempDir one;
+    test::TempDir two;
+    const auto whole = test::copyTutorial("plasticity2D/impact", one.path());
+    const auto split = test::copyTutorial("plasticity2D/impact", two.path());
+    const std::vector<std::string> schemes{"-set", "formulation.type=updatedLagrangian", "-set",
+                                           "stabilisation.type=gradF", "-set", "endTime=4e-6"};
+    for (const auto& dir : {whole, split})
+    {
+        REQUIRE(test::runParticles(dir) == 0);
+    }
+    REQUIRE(test::runSolver(whole, schemes) == 0);
+    auto first = schemes;
+    first.insert(first.end(), {"-set", "controlDict.maxSteps=60"});
+    REQUIRE(test::runSolver(split, first) == 0);
+    auto second = schemes;
+    second.insert(second.end(), {"-set", "controlDict.startFrom=latestTime"});
+    REQUIRE(test::runSolver(split, second) == 0);
+    const VtuData last = lastOutput(whole);
+    test::requireIdenticalState(last, lastOutput(split));
+    const auto& alpha = last.pointData.at("plasticStrain").values;
+    CHECK(*std::max_element(alpha.begin(), alpha.end()) > 0.01); // it did flow
+    CHECK(last.fieldData.at("restart:dissipatedEnergy").values.at(0) > 0.0);
+    for (const std::string table : {"energy", "wall"})
+    {
+        INFO(table);
+        CHECK(fileText(whole / "postProcessing" / table / (table + ".dat")) ==
+              fileText(split / "postProcessing" / table / (table + ".dat")));
+    }
 }
