@@ -4,7 +4,8 @@
 //   component | the displacement component: x, y or z   | y (x in 1D)
 //   bodies    | which bodies ( ) = all                    | ()
 // Columns per body B: B_maxDisplacement B_minDisplacement, then B_min_x B_max_x (B_min_y ...)
-// of the current bounding box.
+// of the current bounding box; summary.json: the peak displacement and when, and the last
+// bounding box (B_final_min_x, B_final_max_x, ...) of the particle centres.
 #include "functionObjects/FunctionObjectModel.hpp"
 
 #include <limits>
@@ -63,6 +64,8 @@ public:
             names_.push_back(name);
         }
         peaks_.assign(bodies_.size(), {std::numeric_limits<double>::lowest(), 0.0});
+        lastLow_.assign(bodies_.size(), Eigen::Vector3d::Zero());
+        lastHigh_.assign(bodies_.size(), Eigen::Vector3d::Zero());
         this->setColumns(columns);
     }
 
@@ -89,6 +92,8 @@ public:
             {
                 peaks_[i] = {largest, state.time};
             }
+            lastLow_[i] = embed<D>(low);
+            lastHigh_[i] = embed<D>(high);
             row.push_back(largest);
             row.push_back(smallest);
             for (int d = 0; d < D; ++d)
@@ -123,6 +128,13 @@ public:
         {
             values[names_[i] + "_peakDisplacement"] = peaks_[i].first;
             values[names_[i] + "_peakTime"] = peaks_[i].second;
+            // The bounding box of the particle centres at the last level seen (a final shape).
+            static const char* axes[3] = {"x", "y", "z"};
+            for (int d = 0; d < D; ++d)
+            {
+                values[names_[i] + "_final_min_" + axes[d]] = lastLow_[i][d];
+                values[names_[i] + "_final_max_" + axes[d]] = lastHigh_[i][d];
+            }
         }
         return values;
     }
@@ -149,6 +161,8 @@ private:
     std::vector<std::size_t> bodies_;
     std::vector<std::string> names_;
     std::vector<std::pair<double, double>> peaks_; // largest displacement and when
+    std::vector<Eigen::Vector3d> lastLow_;          // bounding box of the last level seen
+    std::vector<Eigen::Vector3d> lastHigh_;
 };
 
 SPH_REGISTER_DIM_MODEL(FunctionObject, Extent, "extent");
