@@ -59,8 +59,8 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         computeViscosity();
         chooseTimeStep(step_ == firstStep && !restarted, step_ == firstStep);
         accelerate();
-        applyWalls();
         applyViscosity();
+        applyWalls();
         audit_.completeContactWork(particles_.m, contactDeltaV_, acceleration_);
         // The run ends at the first level at or after endTime (no shortened last step: a run
         // stopped early follows the same trajectory, so restarts continue bit-identically).

@@ -7,8 +7,8 @@
 //   viscosity   the artificial viscosity's accelerations at x^n, v^{n-1/2}, F^n (not `none`)
 //   time step   Δt_n (the time integrator: α h / max c when due, collapse check)
 //   accelerate  a^n = T^n/m + g; fixed particles none
-//   walls       a^n += F_wall/m at x^n, t^n (friction needs Δt_n); the walls' work
 //   viscous     a^n += the viscous accelerations; their work (artificialViscosity/)
+//   walls       a^n += F_wall/m at x^n, t^n (friction needs Δt_n); the walls' work
 //   observe     v^n, the energy audit, the function objects, the progress line
 //   output      VTK when due (the last good level is remembered for a failure)
 //   commit      materials with history commit their state at F^n (after the output, so the
@@ -88,7 +88,8 @@ private:
     void applyWalls();                            // x^n, v^{n-1/2}, a, Δt_n -> a^n += F_wall/m,
                                                   //   Φ^n, wall loads; W_walls (friction)
     void computeViscosity();                      // x^n, v^{n-1/2}, F^n -> a_visc^n
-    void applyViscosity();                        // a_visc^n -> a^n +=; W_visc (second half)
+    void applyViscosity();                        // a_visc^n -> a^n += (before the walls: their
+                                                  //   friction sees it); W_visc (second half)
     void chooseTimeStep(bool freshStart,          // F^n -> the integrator's Δt_n
                         bool firstLevel);
     void checkRunLength(double deltaT) const;     // Δt_0 against endTime and writeInterval
