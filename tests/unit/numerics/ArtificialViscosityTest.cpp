@@ -1,11 +1,13 @@
 // Monaghan's artificial viscosity (artificialViscosity/monaghan/Monaghan.cpp) on random clouds
 // in 2D and 3D: the pair forces conserve linear (and angular) momentum to round-off, vanish for
 // rigid translation, rigid rotation and separating particles, only take kinetic energy, spare
-// fixed particles, and raise the speed that bounds the time step; `none` never acts.
+// fixed particles, raise the speed that bounds the time step and do not depend on the number
+// of threads; `none` never acts.
 #include "artificialViscosity/ArtificialViscosity.hpp"
 #include "numerics/NumericsSupport.hpp"
 
 #include <Eigen/Geometry>
+#include <omp.h>
 
 using namespace sph;
 
@@ -22,9 +24,9 @@ struct Cloud
     std::unique_ptr<Material<D>> material =
         test::build<Material<D>>("type linearElastic; E 1e7; nu 0.3; rho 1000;", {}, D);
 
-    explicit Cloud(unsigned seed)
+    explicit Cloud(unsigned seed, int perSide = D == 2 ? 7 : 4)
     {
-        const auto points = test::lattice<D>(D == 2 ? 7 : 4, 0.2, seed);
+        const auto points = test::lattice<D>(perSide, 0.2, seed);
         p.resize(points.size());
         std::mt19937 random(seed + 1);
         std::uniform_real_distribution<double> uniform(-1.0, 1.0);
@@ -220,4 +222,24 @@ TEST_CASE("monaghan viscosity: negative coefficients and unknown keys are input 
                       Catch::Contains("beta = -2 must lie in [0, inf)"));
     CHECK_THROWS_WITH(cloud.viscosity("type monaghan; alhpa 1;"), Catch::Contains("alhpa"));
     CHECK_THROWS_WITH(cloud.viscosity("type monagan;"), Catch::Contains("monaghan"));
+}
+
+TEST_CASE("monaghan viscosity: one and two threads give the same bits", "[viscosity][threads]")
+{
+    // 1296 particles in 2D, 1331 in 3D: above the size at which the loops use threads.
+    const auto check = [](const auto& cloud) {
+        auto model = cloud.viscosity("type monaghan; alpha 1; beta 2;");
+        const auto v = cloud.randomVelocities(9, 0.3);
+        const int threads = omp_get_max_threads();
+        omp_set_num_threads(1);
+        const auto one = cloud.accelerations(*model, v);
+        const double speedOne = model->signalSpeed(100.0);
+        omp_set_num_threads(2);
+        const auto two = cloud.accelerations(*model, v);
+        omp_set_num_threads(threads);
+        CHECK(one == two);
+        CHECK(speedOne == model->signalSpeed(100.0));
+    };
+    check(Cloud<2>(4, 36));
+    check(Cloud<3>(4, 11));
 }
