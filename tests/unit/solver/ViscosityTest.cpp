@@ -90,7 +90,8 @@ TEST_CASE("viscosity in a run: momentum conserved, dissipative, balance closes (
     }
 }
 
-TEST_CASE("viscosity none: no viscousWork column, same run as without the entry",
+TEST_CASE("viscosity none: no viscousWork column, same run as without the entry; monaghan "
+          "bounds the time step",
           "[viscosity]")
 {
     test::TempDir dir;
@@ -105,6 +106,16 @@ TEST_CASE("viscosity none: no viscousWork column, same run as without the entry"
         CHECK(energyTable(folder).hasColumn("drift"));
     }
     CHECK(energyTable(absent).column("total") == energyTable(none).column("total"));
+    // Monaghan's bound c + 1.2 (alpha c + beta max mu) on the step: at alpha = 1 more than
+    // twice the steps (116 against 52).
+    const auto viscous = writeImpactCase(dir.path() / "viscous", "totalLagrangian",
+                                         "artificialViscosity { type monaghan; alpha 1; beta 2; }");
+    REQUIRE(test::runParticles(viscous) == 0);
+    REQUIRE(test::runSolver(viscous) == 0);
+    const double steps = test::summaryValue(none, "steps");
+    const double viscousSteps = test::summaryValue(viscous, "steps");
+    INFO("steps " << steps << " without viscosity, " << viscousSteps << " with");
+    CHECK(viscousSteps > 2.0 * steps);
 }
 
 TEST_CASE("viscosity with walls: a block bouncing on a floor keeps the balance", "[viscosity]")
