@@ -28,7 +28,8 @@ namespace sph
 {
 
 // The energy balance at a time level (spec §10), kept by the solver's energy audit:
-//   total = kinetic + strain + wallPotential + dissipated - external - contact - wallWork,
+//   total = kinetic + strain + wallPotential + dissipated - external - contact - wallWork
+//           - viscousWork,
 //   conserved by an exact integrator;
 //   drift = (total - total at the first level) / |total at the first level|.
 struct EnergyBalance
@@ -40,6 +41,7 @@ struct EnergyBalance
     double dissipated = 0.0; // energy dissipated by plastic flow since t = 0 (committed levels)
     double wallPotential = 0.0; // Σ ½ k δ² of the rigid walls (walls/WallSet.hpp)
     double wallWork = 0.0; // work of the walls since t = 0: moving, removing, friction
+    double viscousWork = 0.0; // work of the artificial viscosity since t = 0 (<= 0: dissipated)
     double total = 0.0;
     double drift = 0.0;
 };
@@ -90,6 +92,7 @@ public:
         // per particle: written, restarted and listed by -listTypes with no solver edit).
         ParticleFields<D>* fields = nullptr;
         const std::vector<std::string>* wallNames = nullptr; // constant/walls, in order
+        bool artificialViscosity = false; // a viscosity other than `none` is selected
     };
 
     virtual ~FunctionObject() = default;

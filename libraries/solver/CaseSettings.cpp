@@ -70,6 +70,9 @@ Schema SchemeSettings::schema()
                  .optional())
         .add(Key::dict("timeIntegration", "time integrator { type ...; } (default leapfrog)")
                  .selects("timeIntegration")
+                 .optional())
+        .add(Key::dict("artificialViscosity", "artificial viscosity { type ...; } (default none)")
+                 .selects("artificialViscosity")
                  .optional());
 }
 
@@ -91,6 +94,8 @@ SchemeSettings SchemeSettings::read(const Dictionary& sphSchemes)
     settings.stabilisation = &p.dict("stabilisation");
     settings.contact = p.has("contact") ? &p.dict("contact") : nullptr;
     settings.timeIntegration = p.has("timeIntegration") ? &p.dict("timeIntegration") : nullptr;
+    settings.artificialViscosity =
+        p.has("artificialViscosity") ? &p.dict("artificialViscosity") : nullptr;
     return settings;
 }
 

@@ -19,6 +19,7 @@
 //   stabilisation | { type gradF; }                            | required
 //   contact         | { type none; }                           | { type none; }
 //   timeIntegration | { type leapfrog; }                       | { type leapfrog; }
+//   artificialViscosity | { type monaghan; alpha 1; beta 2; }  | { type none; }
 
 #include "core/CaseDictionaries.hpp"
 #include "core/Schema.hpp"
@@ -62,6 +63,7 @@ struct SchemeSettings
     const Dictionary* stabilisation = nullptr;
     const Dictionary* contact = nullptr; // null: none
     const Dictionary* timeIntegration = nullptr; // null: leapfrog
+    const Dictionary* artificialViscosity = nullptr; // null: none
 
     static Schema schema();
     static SchemeSettings read(const Dictionary& sphSchemes);

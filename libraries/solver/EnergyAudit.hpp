@@ -2,10 +2,11 @@
 // The energy audit of a run (spec §10, §12): the work of external (body) forces, of the
 // contact kicks and of each rigid wall accumulated over the steps, and the balance at a level,
 //
-//   total = Σ ½ m |v^n|^2 + Π^n + Φ^n + D - W_external - W_contact - W_walls,
+//   total = Σ ½ m |v^n|^2 + Π^n + Φ^n + D - W_external - W_contact - W_walls - W_visc,
 //   drift = (total - total_0)/|total_0|,
 //
-// with Φ the walls' stored potential and W_walls their work (walls/WallSet.hpp), and D the
+// with W_visc the work of the artificial viscosity (<= 0: the energy it dissipates is
+// -W_visc), Φ the walls' stored potential and W_walls their work (walls/WallSet.hpp), and D the
 // energy dissipated by the materials' committed plastic flow (docs/theory/plasticity.md
 // (P5.3)); Π^n of a material with history is its incremental energy, which holds the current
 // step's dissipation until the commit moves it into D.
@@ -31,7 +32,6 @@ public:
     {
         scalars.bind("externalWork", external_);
         scalars.bind("contactWork", contact_);
-        scalars.bind("dissipatedEnergy", dissipated_);
         scalars.bind("initialEnergy", initial_);
         scalars.bind("haveInitialEnergy", haveInitial_);
         wallWork_.assign(wallNames.size(), 0.0); // not resized again: the scalars point into it
@@ -39,6 +39,32 @@ public:
         {
             scalars.bind("wallWork:" + wallNames[w], wallWork_[w]);
         }
+    }
+
+    // Only when a material keeps a plastic history (its restart scalar and column).
+    void declareDissipation(RunScalars& scalars) { scalars.bind("dissipatedEnergy", dissipated_); }
+
+    // Only with an artificial viscosity other than `none` (its restart scalar and column).
+    void declareViscousWork(RunScalars& scalars) { scalars.bind("viscousWork", viscous_); }
+
+    // The viscous forces m a_visc do the work ½(F^n + F^{n+1})·(x^{n+1} - x^n) over a step,
+    // the trapezoid rule the leapfrog's kinetic energy follows (as for wall friction): the half
+    // with F^n at the drift, the half with F^{n+1} at the next level, once it is known (not at
+    // the first level of a run: a restart's output already holds it).
+    void addViscousDrift(const std::vector<double>& m, const std::vector<Vec<D>>& aVisc,
+                         const std::vector<Vec<D>>& xNew, const std::vector<Vec<D>>& xOld)
+    {
+        viscous_ += halfWork(m, aVisc, xNew, xOld);
+        viscousPending_ = true;
+    }
+    void completeViscousWork(const std::vector<double>& m, const std::vector<Vec<D>>& aVisc,
+                             const std::vector<Vec<D>>& x, const std::vector<Vec<D>>& xOld)
+    {
+        if (viscousPending_)
+        {
+            viscous_ += halfWork(m, aVisc, x, xOld);
+        }
+        viscousPending_ = false;
     }
 
     // Work done by each wall on the solid over a step, or part of one (walls/WallSet.hpp).
@@ -116,8 +142,9 @@ public:
             e.wallWork += work;
         }
         e.dissipated = dissipated_;
+        e.viscousWork = viscous_;
         e.total = e.kinetic + e.strain + e.wallPotential + e.dissipated - e.external - e.contact -
-                  e.wallWork;
+                  e.wallWork - e.viscousWork;
         if (!haveInitial_)
         {
             initial_ = e.total;
@@ -129,7 +156,21 @@ public:
     }
 
 private:
+    // ½ Σ m a·(x - xOld)
+    static double halfWork(const std::vector<double>& m, const std::vector<Vec<D>>& a,
+                           const std::vector<Vec<D>>& x, const std::vector<Vec<D>>& xOld)
+    {
+        double work = 0.0;
+        for (std::size_t i = 0; i < m.size(); ++i)
+        {
+            work += m[i] * a[i].dot(x[i] - xOld[i]);
+        }
+        return 0.5 * work;
+    }
+
     double external_ = 0.0;
+    double viscous_ = 0.0;         // W_visc
+    bool viscousPending_ = false;  // the half of the last drift's viscous work with F^{n+1}
     double contact_ = 0.0;
     double dissipated_ = 0.0;
     std::vector<double> wallWork_; // by wall

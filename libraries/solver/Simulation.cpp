@@ -56,8 +56,10 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         const bool progress = log.progressDue();
         const bool wantEnergy = progress || energyWanted(firstStep);
         const ForceStatus forces = computeForces(atReference, wantEnergy);
+        computeViscosity();
         chooseTimeStep(step_ == firstStep && !restarted, step_ == firstStep);
         accelerate();
+        applyViscosity();
         applyWalls();
         audit_.completeContactWork(particles_.m, contactDeltaV_, acceleration_);
         // The run ends at the first level at or after endTime (no shortened last step: a run
@@ -218,6 +220,33 @@ void Simulation<D>::applyWalls()
     audit_.addWallWork(walls_->completeFrictionWork(particles_.x, previousX_));
 }
 
+// The viscosity reads v^{n-1/2}, so it is known before Δt_n, which it bounds
+// (artificialViscosity/monaghan/Monaghan.cpp).
+template <int D>
+void Simulation<D>::computeViscosity()
+{
+    if (viscosity_->active())
+    {
+        viscosity_->compute({particles_.x, particles_.v, particles_}, viscousAcceleration_);
+    }
+}
+
+template <int D>
+void Simulation<D>::applyViscosity()
+{
+    if (!viscosity_->active())
+    {
+        return;
+    }
+    const std::size_t n = particles_.size();
+#pragma omp parallel for schedule(static) if (useThreads(n))
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        acceleration_[a] += viscousAcceleration_[a]; // zero for fixed particles
+    }
+    audit_.completeViscousWork(particles_.m, viscousAcceleration_, particles_.x, previousX_);
+}
+
 template <int D>
 void Simulation<D>::chooseTimeStep(bool freshStart, bool firstLevel)
 {
@@ -274,6 +303,10 @@ void Simulation<D>::drift(double dt)
     if (!walls_->empty())
     {
         audit_.addWallWork(walls_->driftWork(particles_, previousX_, time_, dt));
+    }
+    if (viscosity_->active())
+    {
+        audit_.addViscousDrift(particles_.m, viscousAcceleration_, particles_.x, previousX_);
     }
 }
 

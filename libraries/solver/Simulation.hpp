@@ -4,8 +4,10 @@
 //
 //   reference   move the reference configuration to x^n when the formulation says so
 //   forces      T^n, F^n, P^n (and Π^n when wanted) at x^n
+//   viscosity   the artificial viscosity's accelerations at x^n, v^{n-1/2}, F^n (not `none`)
 //   time step   Δt_n (the time integrator: α h / max c when due, collapse check)
 //   accelerate  a^n = T^n/m + g; fixed particles none
+//   viscous     a^n += the viscous accelerations; their work (artificialViscosity/)
 //   walls       a^n += F_wall/m at x^n, t^n (friction needs Δt_n); the walls' work
 //   observe     v^n, the energy audit, the function objects, the progress line
 //   output      VTK when due (the last good level is remembered for a failure)
@@ -20,6 +22,7 @@
 // A numerical failure (det F <= 0, NaN, particles crossing in 1D, Δt collapse) writes the last
 // good level and throws NumericalFailure naming step, time, particle and quantity.
 
+#include "artificialViscosity/ArtificialViscosity.hpp"
 #include "contact/Contact.hpp"
 #include "core/CaseDictionaries.hpp"
 #include "core/WriteSchedule.hpp"
@@ -69,6 +72,7 @@ private:
     void loadParticles(const InitialParticles& initial);
     void setupBodies(const Dictionary& bodies);
     void setupWalls();
+    void setupViscosity(const SchemeSettings& schemes);
     void setupFunctionObjects();
     void checkCrossingOrder();
 
@@ -83,6 +87,9 @@ private:
     void accelerate();                            // T, m, g, fixed -> a^n (in place)
     void applyWalls();                            // x^n, v^{n-1/2}, a, Δt_n -> a^n += F_wall/m,
                                                   //   Φ^n, wall loads; W_walls (friction)
+    void computeViscosity();                      // x^n, v^{n-1/2}, F^n -> a_visc^n
+    void applyViscosity();                        // a_visc^n -> a^n += (before the walls: their
+                                                  //   friction sees it); W_visc (second half)
     void chooseTimeStep(bool freshStart,          // F^n -> the integrator's Δt_n
                         bool firstLevel);
     void checkRunLength(double deltaT) const;     // Δt_0 against endTime and writeInterval
@@ -131,6 +138,7 @@ private:
     std::unique_ptr<Stabilisation<D>> scheme_;
     std::unique_ptr<Contact<D>> contact_;
     std::unique_ptr<WallSet<D>> walls_; // constant/walls (empty without the file)
+    std::unique_ptr<ArtificialViscosity<D>> viscosity_;
     std::unique_ptr<TimeIntegration<D>> integrator_;
     std::vector<std::unique_ptr<FunctionObject<D>>> functionObjects_;
     std::unique_ptr<ReferenceManager<D>> reference_;
@@ -149,6 +157,7 @@ private:
     std::vector<Vec<D>> velocitySync_;   // v^n
     std::vector<Vec<D>> previousX_;      // x of the last good level
     std::vector<Vec<D>> contactDeltaV_;
+    std::vector<Vec<D>> viscousAcceleration_; // a_visc^n (artificial viscosity only)
     std::vector<Mat<D>> nextF_;
     std::vector<Mat<D>> nextP_;
 

@@ -57,6 +57,7 @@ void Simulation<D>::writeSummary(const RunSummary& summary, const std::string& f
     json["formulation"] = formulation_->summary();
     json["stabilisation"] = scheme_->summary();
     json["contact"] = contact_->summary();
+    json["artificialViscosity"] = viscosity_->summary();
     json["timeIntegration"] = integrator_->summary();
     json["courant"] = control_.courant;
     json["status"] = failure.empty() ? "finished" : "failed";
@@ -185,6 +186,14 @@ void Simulation<D>::declareFields()
     integrator_->attach(p.v, fields_, runScalars_);
     reference_->declareFields(fields_, runScalars_);
     audit_.declareState(runScalars_, walls_->names());
+    if (viscosity_->active())
+    {
+        audit_.declareViscousWork(runScalars_);
+    }
+    if (historyMaterials_)
+    {
+        audit_.declareDissipation(runScalars_);
+    }
     runScalars_.bind("outputIndex", outputIndex_);
     runScalars_.bind("nextOutputTime", outputSchedule_.next());
 }

@@ -95,6 +95,7 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
 
     setupBodies(dicts.get("bodies"));
     setupWalls();
+    setupViscosity(schemes);
     checkCrossingOrder();
     setupFunctionObjects();
 
@@ -321,6 +322,20 @@ void Simulation<D>::setupWalls()
     }
 }
 
+// After the bodies: the viscosity reads each body's ρ0 and c0. `none` when the entry is absent.
+template <int D>
+void Simulation<D>::setupViscosity(const SchemeSettings& schemes)
+{
+    const Dictionary none("artificialViscosity", dicts_.get("sphSchemes").location());
+    viscosity_ = selectModel<ArtificialViscosity<D>>(
+        schemes.artificialViscosity ? *schemes.artificialViscosity : none,
+        {kernel_.get(), materials_}, D, {"none", {}});
+    if (viscosity_->active())
+    {
+        viscousAcceleration_.assign(particles_.size(), Vec<D>::Zero());
+    }
+}
+
 template <int D>
 void Simulation<D>::checkCrossingOrder()
 {
@@ -362,6 +377,7 @@ void Simulation<D>::setupFunctionObjects()
         args.bodyNames = &bodyNames_;
         args.fields = &fields_;
         args.wallNames = &walls_->names();
+        args.artificialViscosity = viscosity_->active();
         functionObjects_.push_back(selectModel<FunctionObject<D>>(
             entry.dict(), args, D, Selection::withBodies(bodyNames_)));
     }
@@ -379,6 +395,7 @@ std::vector<std::string> Simulation<D>::describe() const
     lines.push_back("Formulation " + formulation_->summary());
     lines.push_back("Scheme      " + scheme_->summary());
     lines.push_back("Contact     " + contact_->summary());
+    lines.push_back("Viscosity   " + viscosity_->summary());
     lines.push_back("Integrator  " + integrator_->summary());
     for (std::size_t b = 0; b < bodyNames_.size(); ++b)
     {

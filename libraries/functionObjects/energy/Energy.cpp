@@ -7,10 +7,12 @@
 //   contact  = work done by contact forces since t = 0,
 //   wallPotential, wallWork (only in a case with constant/walls) = Σ ½ k δ² of the walls and
 //              their work since t = 0: moving, removing, friction (walls/WallSet.hpp),
+//   viscousWork (only with an artificialViscosity other than none) = work of the artificial
+//              viscosity since t = 0, <= 0 (the energy it dissipated is -viscousWork),
 //   dissipated (only when a material keeps a plastic history) = energy dissipated by plastic
 //              flow since t = 0,
 //   total    = kinetic + strain + wallPotential + dissipated - external - contact - wallWork
-//              (conserved by an exact integrator),
+//              - viscousWork (conserved by an exact integrator),
 //   drift    = (total - total(0)) / |total(0)|,
 //   momentum_x .. (Σ m v) and, in 2D/3D, angularMomentum (Σ m x × v; _x _y _z in 3D):
 //   conserved by the internal forces and the contact kick, changed by fixed particles and
@@ -44,6 +46,11 @@ public:
         if (withWalls_)
         {
             columns.insert(columns.end(), {"wallPotential", "wallWork"});
+        }
+        withViscosity_ = args.artificialViscosity;
+        if (withViscosity_)
+        {
+            columns.push_back("viscousWork");
         }
         for (const Material<D>* material : args.materials ? *args.materials : noMaterials())
         {
@@ -95,6 +102,10 @@ public:
         if (withWalls_)
         {
             row.insert(row.end(), {e.wallPotential, e.wallWork});
+        }
+        if (withViscosity_)
+        {
+            row.push_back(e.viscousWork);
         }
         if (withDissipation_)
         {
@@ -151,6 +162,7 @@ public:
 
 private:
     bool withWalls_ = false; // the case has constant/walls: their columns
+    bool withViscosity_ = false; // an artificial viscosity is selected: its column
     bool withDissipation_ = false; // a material keeps a plastic history: its column
     static const std::vector<const Material<D>*>& noMaterials()
     {

@@ -47,6 +47,8 @@ const std::map<std::string, std::map<int, Names>>& expected()
         {"stabilisation", {{1, everyScheme}, {2, everyScheme}, {3, everyScheme}}},
         {"contact", {{1, {"none", "repulsion"}}, {2, {"none", "repulsion"}}, {3, {"none", "repulsion"}}}},
         {"timeIntegration", {{1, {"leapfrog"}}, {2, {"leapfrog"}}, {3, {"leapfrog"}}}},
+        {"artificialViscosity",
+         {{1, {"monaghan", "none"}}, {2, {"monaghan", "none"}}, {3, {"monaghan", "none"}}}},
         {"wall", {{1, {"plane"}}, {2, {"plane"}}, {3, {"plane"}}}},
         {"functionObject",
          {{1, {"energy", "exactSolution", "extent", "oscillation", "probes", "snapshot", "stabilityMonitor", "wallForce"}},

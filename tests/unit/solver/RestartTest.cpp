@@ -75,6 +75,23 @@ TEST_CASE("restart continues bit-identically: 2D updated-Lagrangian gradF", "[re
     checkRestart(whole, split, 1e-3, 0.45e-3, {"energy", "corner"});
 }
 
+TEST_CASE("restart continues bit-identically: 2D updated-Lagrangian with viscosity",
+          "[restart][viscosity]")
+{
+    // The viscous accelerations are recomputed from x^n, v^{n-1/2} and F^n of the output (they
+    // bound the step of that level too); the viscous work is a run scalar of the energy audit.
+    test::TempDir one;
+    test::TempDir two;
+    const std::string schemes =
+        "kernel { type cubicSpline; }\nformulation { type updatedLagrangian; "
+        "referenceUpdateInterval 3; }\nstabilisation { type gradF; }\n"
+        "artificialViscosity { type monaghan; alpha 1; beta 2; }\n";
+    const auto whole = test::writeBlockCase(one.path() / "block", schemes, 1e-3, 1e-4);
+    const auto split = test::writeBlockCase(two.path() / "block", schemes, 1e-3, 1e-4);
+    checkRestart(whole, split, 1e-3, 0.45e-3, {"energy", "corner"});
+    CHECK(lastOutput(whole).fieldData.at("restart:viscousWork").values.at(0) < 0.0);
+}
+
 TEST_CASE("restart continues bit-identically: 2D block against walls", "[restart][walls]")
 {
     // A block sliding on a floor with friction, pushed by a moving wall that is removed at
