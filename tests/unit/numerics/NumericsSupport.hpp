@@ -249,4 +249,44 @@ std::vector<Vec<D>> deformCurrent(const std::vector<Vec<D>>& xr, unsigned seed)
     return x;
 }
 
+// The scheme of that name with test coefficients (vidal's shift, hourglass's alpha).
+template <int D>
+std::string schemeText(const std::string& name)
+{
+    if (name == "vidal")
+    {
+        return D == 1 ? "type vidal; beta (0.2);"
+                      : (D == 2 ? "type vidal; beta (0.2 -0.1);" : "type vidal; beta (0.2 -0.1 0.15);");
+    }
+    if (name == "hourglass")
+    {
+        return "type hourglass; alpha 20;";
+    }
+    return "type " + name + ";";
+}
+
+// The perturbed lattices every scheme is checked on, and their kernel sizes.
+template <int D>
+std::vector<Vec<D>> schemeCloud(int n2D = 8)
+{
+    if constexpr (D == 1)
+    {
+        return lattice<1>(12, 0.2, 5);
+    }
+    else if constexpr (D == 2)
+    {
+        return lattice<2>(n2D, 0.2, 5);
+    }
+    else
+    {
+        return lattice<3>(4, 0.15, 5);
+    }
+}
+
+template <int D>
+double schemeHOverDx()
+{
+    return D == 3 ? 1.6 : 1.4;
+}
+
 } // namespace sph::test

@@ -18,44 +18,6 @@ const char* kPlastic = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 0.0
                        "hardeningModulus 0.2;";
 
 template <int D>
-std::string schemeText(const std::string& name)
-{
-    if (name == "vidal")
-    {
-        return D == 1 ? "type vidal; beta (0.2);"
-                      : (D == 2 ? "type vidal; beta (0.2 -0.1);" : "type vidal; beta (0.2 -0.1 0.15);");
-    }
-    if (name == "hourglass")
-    {
-        return "type hourglass; alpha 20;";
-    }
-    return "type " + name + ";";
-}
-
-template <int D>
-std::vector<Vec<D>> cloud()
-{
-    if constexpr (D == 1)
-    {
-        return test::lattice<1>(12, 0.2, 5);
-    }
-    else if constexpr (D == 2)
-    {
-        return test::lattice<2>(7, 0.2, 5);
-    }
-    else
-    {
-        return test::lattice<3>(4, 0.15, 5);
-    }
-}
-
-template <int D>
-double hOverDx()
-{
-    return D == 3 ? 1.6 : 1.4;
-}
-
-template <int D>
 double largest(const std::vector<Vec<D>>& T)
 {
     double value = 0.0;
@@ -70,8 +32,8 @@ template <int D>
 void noYieldingIsHencky(const std::string& name, bool updated)
 {
     INFO(name << (updated ? " UL" : " TL") << " " << D << "D");
-    test::SchemeFixture<D> hencky(cloud<D>(), schemeText<D>(name), kHencky, updated, hOverDx<D>());
-    test::SchemeFixture<D> j2(cloud<D>(), schemeText<D>(name), kElasticJ2, updated, hOverDx<D>());
+    test::SchemeFixture<D> hencky(test::schemeCloud<D>(7), test::schemeText<D>(name), kHencky, updated, test::schemeHOverDx<D>());
+    test::SchemeFixture<D> j2(test::schemeCloud<D>(7), test::schemeText<D>(name), kElasticJ2, updated, test::schemeHOverDx<D>());
     const auto x = test::deformCurrent<D>(hencky.ref.x, 17);
     const auto T = hencky.forces(x);
     const auto Tj2 = j2.forces(x);
@@ -89,7 +51,7 @@ template <int D>
 void plasticForces(const std::string& name, bool updated)
 {
     INFO(name << (updated ? " UL" : " TL") << " " << D << "D");
-    test::SchemeFixture<D> fixture(cloud<D>(), schemeText<D>(name), kPlastic, updated, hOverDx<D>());
+    test::SchemeFixture<D> fixture(test::schemeCloud<D>(7), test::schemeText<D>(name), kPlastic, updated, test::schemeHOverDx<D>());
     // A committed plastic history at one state, then the forces at another.
     const auto x1 = test::deformCurrent<D>(fixture.ref.x, 17);
     REQUIRE(fixture.commit(x1) > 0.0);
@@ -139,7 +101,7 @@ void commitMovesTheDissipation(const std::string& name, bool updated)
         return;
     }
     INFO(name << (updated ? " UL" : " TL") << " " << D << "D");
-    test::SchemeFixture<D> fixture(cloud<D>(), schemeText<D>(name), kPlastic, updated, hOverDx<D>());
+    test::SchemeFixture<D> fixture(test::schemeCloud<D>(7), test::schemeText<D>(name), kPlastic, updated, test::schemeHOverDx<D>());
     const auto x = test::deformCurrent<D>(fixture.ref.x, 17);
     const double before = fixture.energy(x);
     const double dissipated = fixture.commit(x);
@@ -191,7 +153,7 @@ TEST_CASE("j2Plasticity in every scheme and formulation (3D): hencky without yie
 TEST_CASE("gradF samples use the history of the particle they are taken around",
           "[plasticity][scheme]")
 {
-    test::SchemeFixture<2> fixture(cloud<2>(), "type gradF;", kPlastic, false, 1.4);
+    test::SchemeFixture<2> fixture(test::schemeCloud<2>(7), "type gradF;", kPlastic, false, 1.4);
     const auto x = test::deformCurrent<2>(fixture.ref.x, 17);
     std::vector<Vec<2>> T;
     std::vector<Mat<2>> F;

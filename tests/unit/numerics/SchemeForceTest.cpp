@@ -14,44 +14,6 @@ namespace
 
 const char* kMaterial = "type neoHookean; mu 1; kappa 5; rho 1;";
 
-template <int D>
-std::string schemeText(const std::string& name)
-{
-    if (name == "vidal")
-    {
-        return D == 1 ? "type vidal; beta (0.2);"
-                      : (D == 2 ? "type vidal; beta (0.2 -0.1);" : "type vidal; beta (0.2 -0.1 0.15);");
-    }
-    if (name == "hourglass")
-    {
-        return "type hourglass; alpha 20;";
-    }
-    return "type " + name + ";";
-}
-
-template <int D>
-std::vector<Vec<D>> cloud()
-{
-    if constexpr (D == 1)
-    {
-        return test::lattice<1>(12, 0.2, 5);
-    }
-    else if constexpr (D == 2)
-    {
-        return test::lattice<2>(8, 0.2, 5);
-    }
-    else
-    {
-        return test::lattice<3>(4, 0.15, 5);
-    }
-}
-
-template <int D>
-double hOverDx()
-{
-    return D == 3 ? 1.6 : 1.4;
-}
-
 // Σ x × T as a vector of the rotations of the plane(s).
 template <int D>
 double angularMomentum(const std::vector<Vec<D>>& x, const std::vector<Vec<D>>& T)
@@ -84,8 +46,8 @@ template <int D>
 void checkForces(const std::string& name, bool updated)
 {
     INFO(name << (updated ? " UL" : " TL") << " " << D << "D");
-    test::SchemeFixture<D> fixture(cloud<D>(), schemeText<D>(name), kMaterial, updated,
-                                   hOverDx<D>());
+    test::SchemeFixture<D> fixture(test::schemeCloud<D>(), test::schemeText<D>(name), kMaterial, updated,
+                                   test::schemeHOverDx<D>());
     const auto x = test::deformCurrent<D>(fixture.ref.x, 17);
     ForceStatus status;
     const auto T = fixture.forces(x, &status);
@@ -104,7 +66,7 @@ void checkForces(const std::string& name, bool updated)
     if (name == "hourglass")
     {
         // Against a direct loop over unordered pairs, each pair once, f_b = -f_a (spec §12).
-        test::SchemeFixture<D> plain(cloud<D>(), "type none;", kMaterial, updated, hOverDx<D>());
+        test::SchemeFixture<D> plain(test::schemeCloud<D>(), "type none;", kMaterial, updated, test::schemeHOverDx<D>());
         const auto T0 = plain.forces(x);
         std::vector<Mat<D>> f(x.size());
         for (std::size_t a = 0; a < x.size(); ++a)
@@ -207,7 +169,7 @@ template <int D>
 void checkRigidMotion(const std::string& name, bool updated)
 {
     INFO(name << (updated ? " UL" : " TL") << " " << D << "D, rigid motion");
-    test::SchemeFixture<D> fixture(cloud<D>(), schemeText<D>(name), kMaterial, false, hOverDx<D>());
+    test::SchemeFixture<D> fixture(test::schemeCloud<D>(), test::schemeText<D>(name), kMaterial, false, test::schemeHOverDx<D>());
     if (updated)
     {
         // A stress-free reference configuration that is itself rotated: x^r = Q0 X + c0,
@@ -252,7 +214,7 @@ template <int D>
 void checkParticleDeformationGradient(const std::string& name, bool updated)
 {
     INFO(name << (updated ? " UL" : " TL") << " " << D << "D, per-particle F");
-    test::SchemeFixture<D> fixture(cloud<D>(), schemeText<D>(name), kMaterial, updated, hOverDx<D>());
+    test::SchemeFixture<D> fixture(test::schemeCloud<D>(), test::schemeText<D>(name), kMaterial, updated, test::schemeHOverDx<D>());
     const auto x = test::deformCurrent<D>(fixture.ref.x, 7);
     std::vector<Vec<D>> T;
     std::vector<Mat<D>> F;
@@ -302,7 +264,7 @@ TEST_CASE("every scheme's force is -dPi/dx and conserves momentum (3D)", "[schem
 
 TEST_CASE("vidal with beta = 0 reproduces none exactly", "[scheme][vidal]")
 {
-    const auto points = cloud<2>();
+    const auto points = test::schemeCloud<2>();
     for (const bool updated : {false, true})
     {
         test::SchemeFixture<2> none(points, "type none;", kMaterial, updated);
@@ -320,7 +282,7 @@ TEST_CASE("vidal with beta = 0 reproduces none exactly", "[scheme][vidal]")
 
 TEST_CASE("vidal with beta != 0 differs from none but keeps linear completeness", "[scheme][vidal]")
 {
-    const auto points = cloud<2>();
+    const auto points = test::schemeCloud<2>();
     test::SchemeFixture<2> none(points, "type none;", kMaterial, false);
     test::SchemeFixture<2> vidal(points, "type vidal; beta (0.3 0);", kMaterial, false);
     // An affine deformation gives the same F (exact gradient) hence the same energy.
