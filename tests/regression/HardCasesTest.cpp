@@ -149,3 +149,24 @@ TEST_CASE("hard case large rotation: half a turn strains nothing", "[hardCases]"
     CHECK(std::abs(minJ - 1.0) < 1e-3);
     CHECK(std::abs(maxJ - 1.0) < 1e-3);
 }
+
+TEST_CASE("hard case twisting column: a coarse column twists and untwists whole", "[hardCases]")
+{
+    // 0.25 m spacing (4 x 4 x 24 particles, the lowest layer clamped) over 0.2 s: the top turns
+    // about one revolution and back (the tutorial: 0.125 m over 0.5 s).
+    test::TempDir dir;
+    const auto caseDir = prepare(dir, "twistingColumn", {"column.spacing=0.25"});
+    REQUIRE(test::runSolver(caseDir,
+                            withSets({"endTime=0.2",
+                                      "bodies.column.constraints.base.region.max=(1 1 0.25)"})) == 0);
+    const double time = test::summaryValue(caseDir, "time");
+    const double drift = test::summaryValue(caseDir, "functions/energy/maxDrift");
+    const double closest = test::summaryValue(caseDir, "functions/stability/minDistanceRatio");
+    const double minJ = test::summaryValue(caseDir, "functions/stability/minJ");
+    std::cout << "twistingColumn: energy balance error " << drift << ", closest neighbours "
+              << closest << " spacings, smallest det F " << minJ << "\n";
+    CHECK(time >= 0.2);
+    CHECK(drift < 0.05);
+    CHECK(closest > 0.5);
+    CHECK(minJ > 0.5);
+}

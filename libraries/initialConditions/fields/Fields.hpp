@@ -4,11 +4,11 @@
 //   initialVelocity      { name { region { ... }; type uniform; velocity (1 0); } }
 //   initialDisplacement  { name { region { ... }; type random; amplitude 1e-9; } }
 //
-// Velocity fields: uniform (the default type), rotation, cantileverMode.
+// Velocity fields: uniform (the default type), rotation, cantileverMode, twist (3D).
 // Displacement fields (x = X + u(X) at t = 0): affine, random, checkerboard.
 // Both are functions of the initial position X (and the particle's index, for `random`).
 // Each type is in its own file: UniformVelocity.cpp, RotationVelocity.cpp, CantileverMode.cpp,
-// AffineDisplacement.cpp, RandomDisplacement.cpp, CheckerboardDisplacement.cpp.
+// TwistVelocity.cpp, AffineDisplacement.cpp, RandomDisplacement.cpp, CheckerboardDisplacement.cpp.
 
 #include "core/Registry.hpp"
 #include "particles/Types.hpp"

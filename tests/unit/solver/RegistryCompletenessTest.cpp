@@ -60,7 +60,7 @@ const std::map<std::string, std::map<int, Names>>& expected()
           {3, {"all", "box", "halfSpace", "nearest", "sphere"}}}},
         {"velocityField",
          {{1, {"uniform"}}, {2, {"cantileverMode", "rotation", "uniform"}},
-          {3, {"cantileverMode", "rotation", "uniform"}}}},
+          {3, {"cantileverMode", "rotation", "twist", "uniform"}}}},
         {"displacementField",
          {{1, {"affine", "checkerboard", "random"}},
           {2, {"affine", "checkerboard", "random"}},
