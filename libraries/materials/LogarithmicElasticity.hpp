@@ -49,15 +49,18 @@ PrincipalStrain<D> principalStrain(const Mat<D>& be, double beZZ = 1.0)
     PrincipalStrain<D> p;
     if constexpr (D == 2)
     {
-        // Closed form for a symmetric 2×2: eigenvalues m ± r, eigenvectors at angle θ.
+        // Closed form for a symmetric 2×2: eigenvalues m ± r; the eigenvector of m + r from the
+        // row of (be - λ I) with the larger norm (no trigonometry: this runs for every sample).
         const double m = 0.5 * (be(0, 0) + be(1, 1));
         const double d = 0.5 * (be(0, 0) - be(1, 1));
         const double b = 0.5 * (be(0, 1) + be(1, 0));
-        const double r = std::hypot(d, b);
-        const double theta = 0.5 * std::atan2(b, d);
-        const double c = std::cos(theta);
-        const double s = std::sin(theta);
-        p.vectors << c, -s, s, c;
+        const double r = std::sqrt(d * d + b * b);
+        if (r > 0.0)
+        {
+            Vec<2> v = d >= 0.0 ? Vec<2>(d + r, b) : Vec<2>(b, r - d);
+            v /= v.norm();
+            p.vectors << v[0], -v[1], v[1], v[0];
+        }
         p.eps << 0.5 * std::log(m + r), 0.5 * std::log(m - r), 0.5 * std::log(beZZ);
     }
     else
