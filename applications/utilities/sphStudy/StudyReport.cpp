@@ -3,6 +3,7 @@
 
 #include "core/Format.hpp"
 #include "io/AtomicFile.hpp"
+#include "io/Csv.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -33,12 +34,6 @@ std::string number(double value, int decimals)
 std::string csvNumber(double value)
 {
     return std::isnan(value) ? "" : formatNumber(value, 10);
-}
-
-std::string csvText(std::string text)
-{
-    std::replace(text.begin(), text.end(), '"', '\'');
-    return "\"" + text + "\"";
 }
 
 // "pass" (every bound of `stable` holds), "failed" (the run stopped), or
@@ -134,22 +129,22 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
     csv << "variant";
     for (const auto& axis : study.axes)
     {
-        csv << "," << axis.name;
+        csv << "," << csvField(axis.name);
     }
     csv << ",status,particles,steps,wallSeconds,usPerParticleStep,peakMemoryMB";
     for (const auto& metric : study.metrics)
     {
-        csv << "," << metric->name();
+        csv << "," << csvField(metric->name());
     }
     csv << (study.stable.empty() ? "" : ",verdict") << ",failure\n";
     for (const auto& r : results)
     {
-        csv << r.variant.name;
+        csv << csvField(r.variant.name);
         for (const auto& level : r.variant.levels)
         {
-            csv << "," << level;
+            csv << "," << csvField(level);
         }
-        csv << "," << r.status << "," << csvNumber(r.particles) << "," << csvNumber(r.steps) << ","
+        csv << "," << csvField(r.status) << "," << csvNumber(r.particles) << "," << csvNumber(r.steps) << ","
             << csvNumber(r.wallSeconds) << "," << csvNumber(r.usPerParticleStep) << ","
             << csvNumber(r.peakMemoryMB);
         for (const auto& metric : study.metrics)
@@ -158,9 +153,9 @@ void writeStudyReport(const std::filesystem::path& studyDir, const StudyDefiniti
         }
         if (!study.stable.empty())
         {
-            csv << "," << csvText(verdictOf(study, r));
+            csv << "," << csvField(verdictOf(study, r));
         }
-        csv << "," << csvText(r.failure) << "\n";
+        csv << "," << csvField(r.failure) << "\n";
     }
     writeTextAtomically(studyDir / "results.csv", csv.str());
 

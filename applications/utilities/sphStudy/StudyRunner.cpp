@@ -2,6 +2,7 @@
 #include "StudyMetric.hpp"
 
 #include "core/InputError.hpp"
+#include "core/Statistics.hpp"
 #include "io/AtomicFile.hpp"
 
 #include <nlohmann/json.hpp>
@@ -85,16 +86,6 @@ void copyCase(const std::filesystem::path& from, const std::filesystem::path& to
     }
     std::error_code ec;
     std::filesystem::remove(to / "constant" / "particles.vtu", ec);
-}
-
-double median(std::vector<double> values)
-{
-    if (values.empty())
-    {
-        return notAvailable;
-    }
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
 }
 
 } // namespace
