@@ -12,6 +12,35 @@ namespace sph
 namespace
 {
 
+// Bounds that keep hostile input from exhausting the stack or the memory (issue 12 items 4
+// and 5): no case needs more than a few levels of nesting or a few thousand copied values.
+constexpr int maxNesting = 200;
+constexpr std::size_t maxCopiedItems = 1000000;
+
+// The items of a value, counting the contents of its lists.
+std::size_t itemCount(const std::vector<Item>& items)
+{
+    std::size_t count = items.size();
+    for (const Item& item : items)
+    {
+        if (item.isList())
+        {
+            count += itemCount(item.items());
+        }
+    }
+    return count;
+}
+
+std::size_t itemCount(const Dictionary& dict)
+{
+    std::size_t count = 0;
+    for (const Entry& entry : dict.entries())
+    {
+        count += 1 + (entry.isDict() ? itemCount(entry.dict()) : itemCount(entry.items()));
+    }
+    return count;
+}
+
 std::string readFile(const std::filesystem::path& path)
 {
     return readTextFile(path, "dictionary file", {"Check that the file exists and is readable."});
@@ -45,6 +74,48 @@ public:
     }
 
 private:
+    // One level of '{' or '(' while it is being read.
+    class Nesting
+    {
+    public:
+        Nesting(int& depth, const SourceLocation& where, const char* what) : depth_(depth)
+        {
+            if (depth_ >= maxNesting)
+            {
+                throw InputError(where,
+                                 std::string(what) + " nested more than " +
+                                     std::to_string(maxNesting) + " levels deep",
+                                 {"A case needs a few levels; check for unbalanced brackets or "
+                                  "generated input."});
+            }
+            ++depth_;
+        }
+        ~Nesting() { --depth_; }
+        Nesting(const Nesting&) = delete;
+        Nesting& operator=(const Nesting&) = delete;
+
+    private:
+        int& depth_;
+    };
+
+    // Counts what $name copies; a copy past the bound is an input error (ten lines each
+    // copying the previous one ten times would otherwise grow without bound).
+    void countCopy(const Token& variable, std::size_t items)
+    {
+        copied_ += items;
+        if (copied_ > maxCopiedItems)
+        {
+            throw InputError(variable.where,
+                             "'$" + variable.text + "' makes the file expand to more than " +
+                                 std::to_string(maxCopiedItems) + " copied values",
+                             {"Variables that copy each other repeatedly grow exponentially; "
+                              "copy the values you need once."});
+        }
+    }
+
+    int depth_ = 0;
+    std::size_t copied_ = 0;
+
     // Entries up to a closing brace (when `open` is given) or the end of input.
     void parseBody(Lexer& lexer, Dictionary& dict, const Token* open)
     {
@@ -97,6 +168,7 @@ private:
         if (next.kind == Token::Kind::OpenBrace)
         {
             const Token open = lexer.take();
+            const Nesting level(depth_, open.where, "dictionaries");
             auto child = std::make_unique<Dictionary>("", key.where);
             child->reparent(&dict, key.text); // so $name inside can see enclosing scopes
             parseBody(lexer, *child, &open);
@@ -132,6 +204,7 @@ private:
                 const Entry& source = resolve(variable, dict);
                 if (source.isDict() && lexer.peek().kind == Token::Kind::Semicolon)
                 {
+                    countCopy(variable, itemCount(source.dict()));
                     lexer.take();
                     auto copy = std::make_unique<Dictionary>(source.dict());
                     dict.add(Entry(key.text, key.where, std::move(copy)));
@@ -183,6 +256,7 @@ private:
         }
         case Token::Kind::OpenParen:
         {
+            const Nesting level(depth_, token.where, "lists");
             std::vector<Item> content;
             while (lexer.peek().kind != Token::Kind::CloseParen)
             {
@@ -244,6 +318,7 @@ private:
                              {"Copy a dictionary with 'key $" + variable.text +
                               ";' or merge it with '$" + variable.text + ";'."});
         }
+        countCopy(variable, itemCount(source.items()));
         items.insert(items.end(), source.items().begin(), source.items().end());
     }
 
@@ -265,6 +340,7 @@ private:
                              "missing ';' after '$" + variable.text + "'");
         }
         lexer.take();
+        countCopy(variable, itemCount(source.dict()));
         const Dictionary copy(source.dict());
         for (const Entry& entry : copy.entries())
         {
