@@ -1,5 +1,6 @@
 #include "InputError.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace sph
@@ -42,6 +43,18 @@ std::string printable(const std::string& text)
     return result;
 }
 
+// A message that quotes user text (a key of megabytes, say) keeps its start and end.
+std::string shortened(const std::string& text)
+{
+    constexpr std::size_t limit = 1000;
+    if (text.size() <= limit)
+    {
+        return text;
+    }
+    return text.substr(0, limit / 2) + " [... " + std::to_string(text.size() - limit) +
+           " characters ...] " + text.substr(text.size() - limit / 2);
+}
+
 } // namespace
 
 std::string formatDiagnostic(const SourceLocation& where, const std::string& message,
@@ -49,22 +62,40 @@ std::string formatDiagnostic(const SourceLocation& where, const std::string& mes
 {
     std::string text;
     const std::string prefix = where.prefix();
-    text += prefix.empty() ? message : prefix + ": " + message;
+    text += shortened(prefix.empty() ? message : prefix + ": " + message);
     text += '\n';
     if (where.known() && where.line > 0)
     {
         const std::string& line = where.source->line(where.line);
         if (!line.empty())
         {
-            text += "    " + line + '\n';
-            // Tabs before the caret keep their width so the caret lines up under the text.
-            std::string pad;
-            for (int i = 0; i + 1 < where.column && i < static_cast<int>(line.size()); ++i)
+            // A long line (generated input, a huge key) is shown as a window around the
+            // error, not whole.
+            constexpr std::size_t window = 120;
+            const std::size_t column = static_cast<std::size_t>(std::max(1, where.column)) - 1;
+            std::size_t first = 0;
+            std::string shown = line;
+            std::string lead;
+            if (line.size() > window)
             {
-                pad += line[static_cast<std::size_t>(i)] == '\t' ? '\t' : ' ';
+                first = std::min(column > window / 2 ? column - window / 2 : 0, line.size() - window);
+                shown = line.substr(first, window);
+                lead = first > 0 ? "..." : "";
+                if (first + window < line.size())
+                {
+                    shown += "...";
+                }
             }
-            const int length = std::max(1, where.length);
-            text += "    " + pad + '^' + std::string(static_cast<std::size_t>(length - 1), '~') +
+            text += "    " + lead + shown + '\n';
+            // Tabs before the caret keep their width so the caret lines up under the text.
+            std::string pad(lead.size(), ' ');
+            for (std::size_t i = first; i < column && i < line.size(); ++i)
+            {
+                pad += line[i] == '\t' ? '\t' : ' ';
+            }
+            const auto length = static_cast<std::size_t>(std::max(1, where.length));
+            const std::size_t room = first + window > column ? first + window - column : 1;
+            text += "    " + pad + '^' + std::string(std::min(length, std::max<std::size_t>(room, 1)) - 1, '~') +
                     '\n';
         }
     }
@@ -72,7 +103,7 @@ std::string formatDiagnostic(const SourceLocation& where, const std::string& mes
     {
         if (!note.empty()) // e.g. a "did you mean" that found nothing
         {
-            text += note + '\n';
+            text += shortened(note) + '\n';
         }
     }
     return printable(text);

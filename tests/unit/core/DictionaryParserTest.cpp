@@ -245,3 +245,33 @@ TEST_CASE("the formatted message quotes the line with a caret under the value", 
         CHECK_THAT(text, Catch::Contains("    y $z;\n      ^~\n"));
     }
 }
+
+TEST_CASE("an error in a huge line or about a huge key is not echoed whole", "[parser][errors]")
+{
+    // A key of 100 000 characters with its ';' missing: the message quotes the key and the
+    // source line holds it; both are cut to a window around the error (issue 12 item 9).
+    const std::string key(100000, 'k');
+    try
+    {
+        DictionaryParser::parseString(key + " 1\nnext 2;\n", "huge");
+        FAIL("no error");
+    }
+    catch (const InputError& error)
+    {
+        const std::string text = error.what();
+        CHECK(text.size() < 3000);
+        CHECK_THAT(text, Catch::Contains("missing ';'"));
+        CHECK_THAT(text, Catch::Contains("characters ...]"));
+        CHECK_THAT(text, Catch::Contains("huge:1:"));
+    }
+    // A long line of brackets: the source line is shown as a window around the error column.
+    try
+    {
+        DictionaryParser::parseString("a " + std::string(5000, '(') + ";\n", "brackets");
+        FAIL("no error");
+    }
+    catch (const InputError& error)
+    {
+        CHECK(std::string(error.what()).size() < 1500);
+    }
+}
