@@ -32,32 +32,11 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
     if (!reuseCandidates)
     {
         neighbours = buildNeighbourList<D>(x, body, radius);
-        candidates = NeighbourList();
-        candidateX.clear();
+        candidates.clear();
     }
     else
     {
-        const double skin = 0.1 * radius;
-        bool valid = candidateRadius == radius + skin && candidateX.size() == x.size();
-        const double limit2 = 0.25 * skin * skin;
-        const std::size_t n = x.size();
-        if (valid)
-        {
-            std::size_t moved = 0;
-#pragma omp parallel for schedule(static) reduction(+ : moved) if (useThreads(n))
-            for (std::size_t a = 0; a < n; ++a)
-            {
-                moved += (x[a] - candidateX[a]).squaredNorm() >= limit2 ? 1 : 0;
-            }
-            valid = moved == 0;
-        }
-        if (!valid)
-        {
-            candidates = buildNeighbourList<D>(x, body, radius + skin);
-            candidateX = x;
-            candidateRadius = radius + skin;
-        }
-        filterNeighbourList<D>(candidates, x, radius, neighbours);
+        candidates.update(x, body, radius, neighbours);
     }
     const std::size_t pairs = neighbours.pairCount();
     if (keepKernelValues)

@@ -11,6 +11,7 @@
 #include "particles/CorrectedGradient.hpp"
 #include "particles/NeighbourList.hpp"
 #include "particles/ParticleSet.hpp"
+#include "particles/VerletNeighbours.hpp"
 
 #include <vector>
 
@@ -35,9 +36,7 @@ struct ReferenceConfiguration
     long updateStep = 0; // time step at which x^r was last set
 
     // Candidate pairs for moving references (see rebuild).
-    NeighbourList candidates;
-    std::vector<Vec<D>> candidateX;
-    double candidateRadius = 0.0;
+    VerletNeighbours<D> candidates;
 
     std::size_t size() const { return x.size(); }
 

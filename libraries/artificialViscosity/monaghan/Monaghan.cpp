@@ -19,7 +19,7 @@
 //         dissipation only (the conservative forces keep the leapfrog's second order).
 //
 // Neighbours: the pairs within the kernel support in the CURRENT configuration x^n, in both
-// formulations (CurrentNeighbours.hpp: a cell search with a 10 % skin, reused while no particle
+// formulations (particles/VerletNeighbours.hpp: a cell search with a 10 % skin, reused while no particle
 // moved half the skin). The reference configuration's lists would be those of x^n in UL only
 // at the steps the reference moves, and in TL never once the body deforms (a compressed body
 // would gain pairs the viscosity never sees). The gradient is the plain kernel gradient, not
@@ -44,7 +44,7 @@
 //   alpha | α, the linear (bulk) term, >= 0        | 1
 //   beta  | β, the quadratic (shock) term, >= 0    | 2
 #include "artificialViscosity/ArtificialViscosity.hpp"
-#include "artificialViscosity/CurrentNeighbours.hpp"
+#include "particles/VerletNeighbours.hpp"
 #include "particles/Parallel.hpp"
 
 #include <algorithm>
@@ -147,7 +147,7 @@ private:
     double beta_;
     std::vector<double> soundSpeed_; // by body: c0
     std::vector<double> density_;    // by body: ρ0
-    CurrentNeighbours<D> neighbours_;
+    VerletNeighbours<D> neighbours_;
     std::vector<double> rho_; // per particle, this level
     std::vector<double> c_;
     double muMax_ = 0.0; // max |μ_ab| of the last compute
