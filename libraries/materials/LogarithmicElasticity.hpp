@@ -102,9 +102,9 @@ struct HenckyLaw
     }
 };
 
-// ρ0 c² of (P2.5): the principal longitudinal modulus (M − τᵢ)/λᵢ² of an elastic state whose
-// principal stretches are those of F (be = F Fᵀ), or, with history, the bound
-// (M + max|τᵢ|)/λ²_min of the total F (the stretches of F and be then differ).
+// ρ0 c² of (P2.5) for an elastic state whose principal stretches are those of F (be = F Fᵀ):
+// the principal longitudinal modulus (M − τᵢ)/λᵢ². (A material with history bounds it by
+// (M + max|τᵢ|)/λ²_min of the total F instead: j2Plasticity.)
 template <int D>
 double elasticLongitudinalModulus(const HenckyLaw& law, const PrincipalStrain<D>& p,
                                   const Eigen::Vector3d& tau)
