@@ -28,7 +28,7 @@ void RunScalars::Scalar::set(double number) const
         value);
 }
 
-void RunScalars::add(const std::string& name, std::variant<double*, long*, bool*> value)
+void RunScalars::checkUnique(const std::string& name) const
 {
     for (const auto& scalar : scalars_)
     {
@@ -37,7 +37,25 @@ void RunScalars::add(const std::string& name, std::variant<double*, long*, bool*
             throw std::logic_error("run scalar '" + name + "' is declared twice");
         }
     }
+    for (const auto& array : arrays_)
+    {
+        if (array.name == name)
+        {
+            throw std::logic_error("run array '" + name + "' is declared twice");
+        }
+    }
+}
+
+void RunScalars::add(const std::string& name, std::variant<double*, long*, bool*> value)
+{
+    checkUnique(name);
     scalars_.push_back({name, value});
+}
+
+void RunScalars::bindArray(const std::string& name, std::vector<double>& values)
+{
+    checkUnique(name);
+    arrays_.push_back({name, &values});
 }
 
 } // namespace sph

@@ -34,16 +34,26 @@ namespace sph
 {
 
 // Whose committed history each gradient F[i] of an evaluation uses: particle first + i (its
-// own gradient), or, for the samples of the gradient-of-F scheme around one particle, that
-// particle for all of them (docs/theory/plasticity.md §P7).
+// own gradient), or one packed state per gradient (the samples of the gradient-of-F scheme
+// around one particle each keep their own history, docs/theory/plasticity.md §P7): state i at
+// states + i * stride, and, when next is not null, the state a commit would make of it at F[i]
+// into next + i * stride and its dissipation per unit initial volume into dissipation[i].
 struct HistoryOf
 {
     std::size_t first = 0;
-    bool shared = false;
+    const double* states = nullptr;
+    double* next = nullptr;
+    double* dissipation = nullptr;
+    std::size_t stride = 0;
 
-    static HistoryOf particles(std::size_t first) { return {first, false}; }
-    static HistoryOf around(std::size_t particle) { return {particle, true}; }
-    std::size_t particle(std::size_t i) const { return shared ? first : first + i; }
+    static HistoryOf particles(std::size_t first) { return {first}; }
+    static HistoryOf samples(const double* states, std::size_t stride, double* next = nullptr,
+                             double* dissipation = nullptr)
+    {
+        return {0, states, next, dissipation, stride};
+    }
+    bool perSample() const { return states != nullptr; }
+    std::size_t particle(std::size_t i) const { return first + i; }
 };
 
 template <int D>
@@ -84,6 +94,13 @@ public:
     // first + n at their gradients F (the accepted level), returning the energy this commit
     // dissipates, Σ V0 ΔD. Called once per level, after the level was written.
     virtual bool hasHistory() const { return false; }
+    // The committed state of particle a as historyComponents() numbers (HistoryOf::samples).
+    virtual std::size_t historyComponents() const { return 0; }
+    virtual void packHistory(std::size_t a, double* out) const
+    {
+        (void)a;
+        (void)out;
+    }
     virtual double commit(const Mat<D>* F, const double* V0, std::size_t first, std::size_t n)
     {
         (void)F;

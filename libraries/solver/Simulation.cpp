@@ -115,8 +115,8 @@ void Simulation<D>::writeLevel(RunLog& log, const FunctionState& functionState)
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
-// Each body's material commits its particles' state at F^n, in chunks in parallel; the
-// dissipation is summed in chunk order (independent of the thread count).
+// The materials with history commit their state at F^n (the scheme says how: gradF keeps
+// one per stress sample); the dissipation enters the energy audit.
 template <int D>
 void Simulation<D>::commitHistory()
 {
@@ -124,29 +124,13 @@ void Simulation<D>::commitHistory()
     {
         return;
     }
-    const std::size_t chunk = 256;
-    for (std::size_t b = 0; b < particles_.bodies.size(); ++b)
+    std::vector<Material<D>*> withHistory;
+    for (const auto& material : materialModels_)
     {
-        if (!materials_[b]->hasHistory())
-        {
-            continue;
-        }
-        const BodyRange& range = particles_.bodies[b];
-        const std::size_t chunks = (range.size() + chunk - 1) / chunk;
-        std::vector<double> dissipated(chunks, 0.0);
-        Material<D>& material = *materialModels_[b];
-#pragma omp parallel for schedule(static) if (useThreads(range.size()))
-        for (std::size_t i = 0; i < chunks; ++i)
-        {
-            const std::size_t first = range.begin + i * chunk;
-            const std::size_t count = std::min(chunk, range.end - first);
-            dissipated[i] = material.commit(&particles_.F[first], &particles_.V0[first], first, count);
-        }
-        for (const double energy : dissipated)
-        {
-            audit_.addDissipation(energy);
-        }
+        withHistory.push_back(material->hasHistory() ? material.get() : nullptr);
     }
+    audit_.addDissipation(scheme_->commitHistory(
+        {particles_.F, particles_.V0, particles_.bodies, withHistory}));
 }
 
 // x is the reference configuration bitwise (f = I exactly) when the reference was just moved

@@ -193,6 +193,7 @@ void Simulation<D>::declareFields()
     if (historyMaterials_)
     {
         audit_.declareDissipation(runScalars_);
+        scheme_->declareHistory(materials_, runScalars_);
     }
     runScalars_.bind("outputIndex", outputIndex_);
     runScalars_.bind("nextOutputTime", outputSchedule_.next());

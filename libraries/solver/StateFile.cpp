@@ -117,6 +117,10 @@ void writeState(const ParticleFields<D>& fields, const RunScalars& scalars, doub
     {
         data.fieldData[restartPrefix + scalar.name] = VtuArray{1, {scalar.get()}, false, {}, {}};
     }
+    for (const auto& array : scalars.arrays())
+    {
+        data.fieldData[restartPrefix + array.name] = VtuArray{1, *array.values, false, {}, {}};
+    }
 }
 
 template <int D>
@@ -181,6 +185,15 @@ void readState(const VtuData& data, ParticleFields<D>& fields, const RunScalars&
             throw restartError(file, "it has no number '" + std::string(restartPrefix) + scalar.name + "'");
         }
         scalar.set(found->second.values[0]);
+    }
+    for (const auto& array : scalars.arrays())
+    {
+        const auto found = data.fieldData.find(restartPrefix + array.name);
+        if (found == data.fieldData.end() || found->second.components != 1)
+        {
+            throw restartError(file, "it has no array '" + std::string(restartPrefix) + array.name + "'");
+        }
+        *array.values = found->second.values;
     }
 }
 

@@ -8,8 +8,8 @@
 //                           says otherwise; the active scalars/vectors/tensors set
 //   point data, restart     restart-only fields as "restart:<name>", their native D, D×D or
 //                           D×D×D components in double precision
-//   field data              "TimeValue" (ParaView's time) and every run scalar as
-//                           "restart:<name>"
+//   field data              "TimeValue" (ParaView's time) and every run scalar and run
+//                           array as "restart:<name>"
 //
 // Reading puts back every restart field (from its display array when it is also displayed:
 // the padding is exact) and every run scalar; anything missing or of another shape is an

@@ -12,8 +12,10 @@
 // not depend on the number of threads.
 
 #include "core/Registry.hpp"
+#include "core/RunScalars.hpp"
 #include "kernels/Kernel.hpp"
 #include "materials/Material.hpp"
+#include "particles/Parallel.hpp"
 #include "particles/ParticleFields.hpp"
 #include "particles/ReferenceConfiguration.hpp"
 
@@ -46,6 +48,49 @@ struct ForceOutput
     std::vector<Mat<D>>& F; // deformation gradient F = f F^r
     std::vector<Mat<D>>& P; // first Piola-Kirchhoff stress at F
 };
+
+// What committing the materials' history reads: the last force evaluation's F (the accepted
+// level) and the materials that keep a history, by body (null for the others).
+template <int D>
+struct HistoryCommit
+{
+    const std::vector<Mat<D>>& F;
+    const std::vector<double>& V0;
+    const std::vector<BodyRange>& bodies;
+    const std::vector<Material<D>*>& materials;
+};
+
+// Each particle's state committed at its own F, in chunks in parallel; returns the dissipated
+// energy, summed in chunk order (independent of the thread count).
+template <int D>
+double commitParticleHistory(const HistoryCommit<D>& in)
+{
+    const std::size_t chunk = 256;
+    double total = 0.0;
+    for (std::size_t b = 0; b < in.bodies.size(); ++b)
+    {
+        Material<D>* material = in.materials[b];
+        if (!material)
+        {
+            continue;
+        }
+        const BodyRange& range = in.bodies[b];
+        const std::size_t chunks = (range.size() + chunk - 1) / chunk;
+        std::vector<double> dissipated(chunks, 0.0);
+#pragma omp parallel for schedule(static) if (useThreads(range.size()))
+        for (std::size_t i = 0; i < chunks; ++i)
+        {
+            const std::size_t first = range.begin + i * chunk;
+            const std::size_t count = std::min(chunk, range.end - first);
+            dissipated[i] = material->commit(&in.F[first], &in.V0[first], first, count);
+        }
+        for (const double energy : dissipated)
+        {
+            total += energy;
+        }
+    }
+    return total;
+}
 
 // Why a state cannot be used. The solver words its diagnosis by the kind; the message is the
 // scheme's own description of the quantity (e.g. which matrix is singular).
@@ -129,6 +174,18 @@ public:
 
     // Π at the current positions (the energy the force derives from).
     virtual double energy(const ForceInput<D>& in) = 0;
+
+    // Materials with history (docs/theory/plasticity.md §P7). A scheme that keeps history of
+    // its own declares its restart state here (called once, when some material has history)...
+    virtual void declareHistory(const std::vector<const Material<D>*>& materials,
+                                RunScalars& scalars)
+    {
+        (void)materials;
+        (void)scalars;
+    }
+    // ...and commits the history at the state of the last force evaluation, once per accepted
+    // level, returning the dissipated energy. By default each particle at its own F.
+    virtual double commitHistory(const HistoryCommit<D>& in) { return commitParticleHistory(in); }
 };
 
 } // namespace sph

@@ -213,7 +213,7 @@ typename J2Plasticity<D>::Result J2Plasticity<D>::returnMap(const Mat<D>& F, con
         r.P = p.assemble(tau) * Finv.transpose();
         r.maxAbsTau = tau.cwiseAbs().maxCoeff();
         r.energy = law_.energy(p.eps);
-        if (wantNext)
+        if (wantNext && r.deltaGamma > 0.0)
         {
             const Eigen::Vector3d be = (2.0 * p.eps).array().exp();
             const Mat<D> Cp = Finv * p.assemble(be) * Finv.transpose();
@@ -232,21 +232,71 @@ typename J2Plasticity<D>::Result J2Plasticity<D>::returnMap(const Mat<D>& F, con
 }
 
 template <int D>
+void J2Plasticity<D>::pack(const State& s, double* out)
+{
+    for (int i = 0; i < D * D; ++i)
+    {
+        out[i] = s.inversePlastic(i / D, i % D);
+    }
+    if constexpr (D == 2)
+    {
+        out[D * D] = s.inversePlasticZZ;
+    }
+    out[packedSize - 1] = s.alpha;
+}
+
+template <int D>
+typename J2Plasticity<D>::State J2Plasticity<D>::unpack(const double* in)
+{
+    State s;
+    for (int i = 0; i < D * D; ++i)
+    {
+        s.inversePlastic(i / D, i % D) = in[i];
+    }
+    if constexpr (D == 2)
+    {
+        s.inversePlasticZZ = in[D * D];
+    }
+    s.alpha = in[packedSize - 1];
+    return s;
+}
+
+template <int D>
 void J2Plasticity<D>::evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n,
                                HistoryOf history) const
 {
-    State shared;
-    if (history.shared)
-    {
-        shared = state(history.first);
-    }
     for (std::size_t i = 0; i < n; ++i)
     {
-        const Result r = returnMap(F[i], history.shared ? shared : state(history.particle(i)), false);
+        if (!history.perSample())
+        {
+            const Result r = returnMap(F[i], state(history.particle(i)), false);
+            P[i] = r.P;
+            if (psi)
+            {
+                psi[i] = r.energy;
+            }
+            continue;
+        }
+        const double* committed = history.states + i * history.stride;
+        const bool wantNext = history.next != nullptr;
+        const Result r = returnMap(F[i], unpack(committed), wantNext);
         P[i] = r.P;
         if (psi)
         {
             psi[i] = r.energy;
+        }
+        if (wantNext)
+        {
+            double* next = history.next + i * history.stride;
+            if (r.deltaGamma > 0.0)
+            {
+                pack(r.next, next);
+            }
+            else
+            {
+                std::copy(committed, committed + packedSize, next);
+            }
+            history.dissipation[i] = sigmaY0_ * r.deltaGamma;
         }
     }
 }

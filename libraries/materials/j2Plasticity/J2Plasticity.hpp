@@ -72,6 +72,13 @@ public:
     double commit(const Mat<D>* F, const double* V0, std::size_t first, std::size_t n) override;
     State state(std::size_t a) const;
 
+    // A state as numbers: Cp⁻¹ (D×D, row-major), then Cp⁻¹_zz (2D), then α.
+    static constexpr std::size_t packedSize = D * D + (D == 2 ? 1 : 0) + 1;
+    std::size_t historyComponents() const override { return packedSize; }
+    void packHistory(std::size_t a, double* out) const override { pack(state(a), out); }
+    static void pack(const State& s, double* out);
+    static State unpack(const double* in);
+
 private:
     double waveSpeedOf(const Mat<D>& F, const State& state) const;
     // The return in principal log strains (§P5); eps in, returned eps out.

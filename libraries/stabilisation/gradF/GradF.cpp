@@ -3,6 +3,7 @@
 #include "stabilisation/gradF/MonomialTensors.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace sph
 {
@@ -26,6 +27,7 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
     s_.resize(n);
     Y_.resize(n);
     maxNeighbours_ = list.maxCount();
+    samples_.listChanged();
     long singular = -1;
 #pragma omp parallel for schedule(static) reduction(max : singular) if (useThreads(n))
     for (std::size_t a = 0; a < n; ++a)
@@ -182,6 +184,7 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
     {
         const Kinematics kin = kinematics(a, x, ref, false, scratch);
         F[a] = kin.F;
+
         if (newK)
         {
             // K' = G f^{-1} on the derivative index: K'_ijk = G_ijl (f^{-1})_lk (spec §6.5).
@@ -229,6 +232,8 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
         chunks_ = makeChunks(in.bodies);
     }
     const bool carriesK = !ref.K.empty();
+    samples_.follow(list, in.body, in.materials);
+    sampleDissipation_.resize(n);
     std::vector<ChunkTally> tallies(chunks_.size());
 #pragma omp parallel if (useThreads(n))
     {
@@ -257,10 +262,18 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 {
                     scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
                 }
-                // Every sample uses a's committed history (docs/theory/plasticity.md §P7).
                 material.evaluate(scratch.F.data(), scratch.P.data(),
                                   wantEnergy ? scratch.psi.data() : nullptr, count,
-                                  HistoryOf::around(a));
+                                  historyAround(a, material, list, &scratch));
+                if (material.hasHistory())
+                {
+                    double dissipation = 0.0;
+                    for (std::size_t j = 0; j < count; ++j)
+                    {
+                        dissipation += scratch.w[j] * scratch.dissipation[j];
+                    }
+                    sampleDissipation_[a] = in.V0[a] * dissipation;
+                }
                 out.P[a] = scratch.P[0]; // b = a: F_a(a) = F_a
                 // S_a = Σ Ŵ P_b,  Q_a[k] = Σ Ŵ x^r_ba,k P_b
                 Mat<D> S = Mat<D>::Zero();
@@ -326,6 +339,7 @@ double GradF<D>::energy(const ForceInput<D>& in)
 {
     const ReferenceConfiguration<D>& ref = in.ref;
     const NeighbourList& list = ref.neighbours;
+    samples_.follow(list, in.body, in.materials);
     double total = 0.0;
     for (std::size_t b = 0; b < in.bodies.size(); ++b)
     {
@@ -334,16 +348,62 @@ double GradF<D>::energy(const ForceInput<D>& in)
         {
             const Kinematics kin = kinematics(a, in.x, ref);
             double sum = 0.0;
+            const HistoryOf history = historyAround(a, material, list, nullptr);
             for (std::size_t k = list.begin(a); k < list.end(a); ++k)
             {
                 const Vec<D> xr = ref.x[list.indices[k]] - ref.x[a];
                 const Mat<D> Fb = kin.F + kin.G.contract(xr);
                 Mat<D> P;
                 double psi;
-                material.evaluate(&Fb, &P, &psi, 1, HistoryOf::around(a));
+                HistoryOf one = history;
+                if (one.perSample())
+                {
+                    one.states += (k - list.begin(a)) * one.stride;
+                }
+                material.evaluate(&Fb, &P, &psi, 1, one);
                 sum += weight(ref, a, k) * psi;
             }
             total += in.V0[a] * sum;
+        }
+    }
+    return total;
+}
+
+template <int D>
+HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
+                                  const NeighbourList& list, Scratch* scratch)
+{
+    if (!material.hasHistory())
+    {
+        return HistoryOf::particles(a); // unused
+    }
+    if (!samples_.active())
+    {
+        throw std::logic_error("gradF: a material with history, but declareHistory() was not "
+                               "called");
+    }
+    const std::size_t k = list.begin(a);
+    return scratch ? HistoryOf::samples(samples_.committed(k), samples_.stride(),
+                                        samples_.next(k), scratch->dissipation.data())
+                   : HistoryOf::samples(samples_.committed(k), samples_.stride());
+}
+
+// The particles' own states (each = its sample a–a: F_a(a) = F_a) for display and as the
+// start of new pairs, then the samples' states; the dissipation is that of the samples.
+template <int D>
+double GradF<D>::commitHistory(const HistoryCommit<D>& in)
+{
+    commitParticleHistory(in);
+    samples_.commit();
+    double total = 0.0;
+    for (std::size_t b = 0; b < in.bodies.size(); ++b)
+    {
+        if (in.materials[b])
+        {
+            for (std::size_t a = in.bodies[b].begin; a < in.bodies[b].end; ++a)
+            {
+                total += sampleDissipation_[a];
+            }
         }
     }
     return total;

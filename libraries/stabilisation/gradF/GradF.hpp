@@ -11,9 +11,12 @@
 // Force: the exact -∂Π/∂x of spec §6.4 (which replaces the paper's garbled eq. 33):
 //   T_c = -Σ_a V0_a { (A_a - C_a Y_a) g_a(c) + C_a (Ŵ_ac z_ac - δ_ac s_a) }.
 // Without the gradient term (G = 0) this is exactly `none`.
+// A material with history: every sample keeps its own (SampleHistory, docs/theory/
+// plasticity.md §P7); the commit dissipates Σ_a V0_a Σ_b Ŵ_ab D(F_b(a)).
 // Keys: none.
 
 #include "stabilisation/CsphOperators.hpp"
+#include "stabilisation/gradF/SampleHistory.hpp"
 
 namespace sph
 {
@@ -44,6 +47,12 @@ public:
     ForceStatus computeForces(const ForceInput<D>& in, ForceOutput<D>& out,
                               bool wantEnergy) override;
     double energy(const ForceInput<D>& in) override;
+    void declareHistory(const std::vector<const Material<D>*>& materials,
+                        RunScalars& scalars) override
+    {
+        samples_.declare(materials, scalars);
+    }
+    double commitHistory(const HistoryCommit<D>& in) override;
 
     // Kinematics of particle a at positions x: f_a, F_a = f_a F^r_a and G_a (public for tests).
     struct Kinematics
@@ -64,8 +73,10 @@ public:
         std::vector<Mat<D>> F;  // F_b(a)
         std::vector<Mat<D>> P;  // P(F_b(a))
         std::vector<double> psi;
+        std::vector<double> dissipation; // per unit initial volume, by a commit at F_b(a)
         void resize(std::size_t n)
         {
+            dissipation.resize(n);
             xr.resize(n);
             w.resize(n);
             F.resize(n);
@@ -97,6 +108,14 @@ private:
     std::vector<MatDM> Cw_;           // V0_a C_a / Σ_e W_ae V^r_e
     std::vector<Vec<D>> selfTerm_;    // V0_a C_a s_a
     std::vector<ParticleChunk> chunks_;
+
+    // Materials with history: the samples' states and V0_a Σ_b Ŵ_ab D_b of each particle's
+    // samples at the last evaluation (what its commit dissipates).
+    SampleHistory<D> samples_;
+    std::vector<double> sampleDissipation_;
+    // Where the samples around particle a find their history (a's slots of the list).
+    HistoryOf historyAround(std::size_t a, const Material<D>& material,
+                            const NeighbourList& list, Scratch* scratch);
 };
 
 } // namespace sph

@@ -138,6 +138,7 @@ template <int D>
 struct SchemeFixture
 {
     ParticleFields<D> fields; // a material's history (plastic models), one entry per point
+    RunScalars scalars;       // a scheme's restart arrays (gradF's per-sample history)
     std::unique_ptr<Kernel> kernel;
     std::unique_ptr<Material<D>> material;
     std::unique_ptr<Stabilisation<D>> scheme;
@@ -186,6 +187,10 @@ struct SchemeFixture
         }
         REQUIRE(ref.rebuild(*kernel, body, scheme->referenceNeeds(*kernel).searchRadius) < 0);
         REQUIRE(scheme->prepare(ref).ok());
+        if (material->hasHistory())
+        {
+            scheme->declareHistory(materials, scalars);
+        }
     }
 
     ForceInput<D> input(const std::vector<Vec<D>>& x) const
@@ -206,7 +211,8 @@ struct SchemeFixture
         return T;
     }
     double energy(const std::vector<Vec<D>>& x) { return scheme->energy(input(x)); }
-    // Commits the material's history at positions x (as the solver does once per level).
+    // Commits the history at positions x (as the solver does once per level: a force
+    // evaluation there, then the scheme's commit); returns the dissipated energy.
     double commit(const std::vector<Vec<D>>& x)
     {
         std::vector<Vec<D>> T;
@@ -214,7 +220,8 @@ struct SchemeFixture
         std::vector<Mat<D>> P;
         ForceOutput<D> out{T, F, P};
         REQUIRE(scheme->computeForces(input(x), out, false).ok());
-        return material->commit(F.data(), V0.data(), 0, F.size());
+        std::vector<Material<D>*> withHistory{material->hasHistory() ? material.get() : nullptr};
+        return scheme->commitHistory({F, V0, bodies, withHistory});
     }
 };
 
