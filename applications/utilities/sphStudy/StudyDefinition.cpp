@@ -6,6 +6,7 @@
 #include "core/Suggest.hpp"
 
 #include <algorithm>
+#include <cctype>
 
 namespace sph
 {
@@ -157,6 +158,30 @@ void readRestrictions(const Dictionary& axesDict, StudyDefinition& study)
     }
 }
 
+// Axis, level and metric names become folder and file names (runs/<variant>, plot/<line>.dat)
+// and text in the generated gnuplot script: only plain names, so that none can leave the study
+// folder or end a quoted string.
+void checkPlainName(const Entry& entry, const std::string& what)
+{
+    const std::string& name = entry.key();
+    const auto plain = [](char c)
+    {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '+' ||
+               c == '-';
+    };
+    const bool ok = !name.empty() && name.size() <= 64 &&
+                    (std::isalnum(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
+                    std::all_of(name.begin(), name.end(), plain);
+    if (!ok)
+    {
+        throw InputError(entry.keyLocation(),
+                         what + " '" + name + "' is not a plain name: it names a folder and a "
+                                              "plot line",
+                         {"Use letters, digits and _ . + - (at most 64, starting with a letter, "
+                          "a digit or _), e.g. dx0.5mm or ULgradF."});
+    }
+}
+
 } // namespace
 
 StudyDefinition StudyDefinition::read(const Dictionary& studyDict,
@@ -191,9 +216,11 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict,
                              "axis '" + axisEntry.key() + "' must be a dictionary of levels",
                              {"e.g. resolution { n40 { particles (\"bar.n=40\"); } }"});
         }
+        checkPlainName(axisEntry, "axis");
         StudyAxis axis{axisEntry.key(), {}};
         for (const Entry& levelEntry : axisEntry.dict().entries())
         {
+            checkPlainName(levelEntry, "level");
             if (!levelEntry.isDict())
             {
                 throw InputError(levelEntry.keyLocation(),
@@ -218,6 +245,7 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict,
     readRestrictions(p.dict("axes"), study);
     for (const Entry& entry : p.dict("metrics").entries())
     {
+        checkPlainName(entry, "metric");
         if (!entry.isDict())
         {
             throw InputError(entry.keyLocation(),

@@ -2,6 +2,7 @@
 #include "StudyMetric.hpp"
 
 #include "core/Format.hpp"
+#include "core/Process.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/Csv.hpp"
 
@@ -334,12 +335,12 @@ void writePlots(const std::filesystem::path& studyDir, const StudyDefinition& st
        << "set output 'errorVsParticles.png'\nset xlabel 'particles'\nset title '" << primary
        << " against the number of particles'\nplot " << plotOf("4") << "\n";
     writeTextAtomically(studyDir / "study.gp", gp.str());
-    if (std::system("command -v gnuplot > /dev/null 2>&1") == 0)
+    if (const auto gnuplot = findInPath("gnuplot"))
     {
-        const std::string command = "cd '" + studyDir.string() + "' && gnuplot study.gp";
-        if (std::system(command.c_str()) != 0)
+        if (runProgram(*gnuplot, {"study.gp"}, studyDir / "log.gnuplot", studyDir, "") != 0)
         {
-            std::fprintf(stderr, "sphStudy: gnuplot failed on %s/study.gp\n", studyDir.c_str());
+            std::fprintf(stderr, "sphStudy: gnuplot failed on %s/study.gp (see log.gnuplot)\n",
+                         studyDir.c_str());
         }
     }
 }

@@ -2,15 +2,11 @@
 #include "StudyMetric.hpp"
 
 #include "core/InputError.hpp"
+#include "core/Process.hpp"
 #include "core/Statistics.hpp"
 #include "io/AtomicFile.hpp"
 
 #include <nlohmann/json.hpp>
-
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -20,8 +16,6 @@
 #include <limits>
 #include <sstream>
 
-extern char** environ;
-
 
 namespace sph
 {
@@ -30,35 +24,7 @@ namespace
 {
 
 const double notAvailable = std::numeric_limits<double>::quiet_NaN();
-
-// Runs `program args...` with output to `log`; returns the exit code (128 + signal if killed).
-int runProgram(const std::filesystem::path& program, const std::vector<std::string>& args,
-               const std::filesystem::path& log)
-{
-    std::vector<std::string> words{program.string()};
-    words.insert(words.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& word : words)
-    {
-        argv.push_back(word.data());
-    }
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    pid_t child = 0;
-    const int error = posix_spawn(&child, program.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (error != 0)
-    {
-        throw InputError("sphStudy: cannot start '" + program.string() + "'",
-                         {"It is looked for next to sphStudy; rebuild sphSolid."});
-    }
-    int status = 0;
-    waitpid(child, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
+const char* nextToStudy = "It is looked for next to sphStudy; rebuild sphSolid.";
 
 // The first line of an error message in a log (the line after the banner).
 std::string firstError(const std::filesystem::path& log)
@@ -173,7 +139,7 @@ VariantResult StudyRunner::runVariant(const StudyVariant& variant)
         args.push_back("-set");
         args.push_back(set);
     }
-    if (runProgram(binDir_ / "sphParticles", args, dir / "log.sphParticles") != 0)
+    if (runProgram(binDir_ / "sphParticles", args, dir / "log.sphParticles", {}, nextToStudy) != 0)
     {
         result.status = "failed";
         result.failure = "sphParticles: " + firstError(dir / "log.sphParticles");
@@ -195,7 +161,7 @@ VariantResult StudyRunner::runVariant(const StudyVariant& variant)
         std::vector<double> rates;
         for (long r = 0; r < study_.repeats; ++r)
         {
-            const int code = runProgram(binDir_ / "sphSolid", solverArgs, dir / "log.sphSolid");
+            const int code = runProgram(binDir_ / "sphSolid", solverArgs, dir / "log.sphSolid", {}, nextToStudy);
             const std::filesystem::path summary = dir / "postProcessing" / "summary.json";
             if (code == 1 || !std::filesystem::exists(summary))
             {

@@ -92,7 +92,12 @@ std::vector<std::map<std::string, std::string>> readCsv(const fs::path& file)
 TEST_CASE("sphStudy runs every variant, measures, reports and resumes", "[study]")
 {
     TempDir dir;
-    const fs::path caseDir = copyTutorial("bar1D/dykaBar", dir.path());
+    // A case path that would break out of a quoted shell command: nothing goes through a shell
+    // (gnuplot is started with an argument vector in the study folder), so the plots appear
+    // and no command runs.
+    const fs::path hostile = dir.path() / "it's $(touch hacked) a case";
+    fs::create_directories(hostile);
+    const fs::path caseDir = copyTutorial("bar1D/dykaBar", hostile);
     std::ofstream(caseDir / "system" / "studyDict") << studyDict;
     std::ofstream(caseDir / "zeros.dat") << "0 0\n1 0\n";
 
@@ -106,10 +111,13 @@ TEST_CASE("sphStudy runs every variant, measures, reports and resumes", "[study]
     CHECK(second != std::string::npos);
 
     const fs::path study = caseDir / "postProcessing" / "study";
-    for (const char* file : {"results.csv", "results.md", "study.gp"})
+    for (const char* file : {"results.csv", "results.md", "study.gp", "errorVsTime.png",
+                             "errorVsParticles.png"})
     {
         CHECK(fs::exists(study / file));
     }
+    CHECK_FALSE(fs::exists(dir.path() / "hacked"));
+    CHECK_FALSE(fs::exists(study / "hacked"));
     const auto rows = readCsv(study / "results.csv");
     REQUIRE(rows.size() == 4);
     for (const auto& row : rows)
@@ -233,6 +241,23 @@ TEST_CASE("sphStudy reports mistakes in studyDict at their place", "[study][erro
         CHECK_THAT(output, Catch::Contains("missing required key 'reference' in "
                                            "'metrics/largestTip'"));
         CHECK_THAT(output, Catch::Contains("referenceFile needs:"));
+    }
+    SECTION("a level name that would leave the study folder")
+    {
+        const std::string output = dryRunWith("n20 { particles", "../../escape { particles");
+        CHECK_THAT(output, Catch::Contains("system/studyDict:"));
+        CHECK_THAT(output, Catch::Contains("level '../../escape' is not a plain name"));
+        CHECK_THAT(output, Catch::Contains("letters, digits and _ . + -"));
+    }
+    SECTION("a level name with a quote (gnuplot script text)")
+    {
+        const std::string output = dryRunWith("n20 { particles", "n20'`id` { particles");
+        CHECK_THAT(output, Catch::Contains("is not a plain name"));
+    }
+    SECTION("an axis name with a slash")
+    {
+        CHECK_THAT(dryRunWith("resolution { n20", "/tmp/x { n20"),
+                   Catch::Contains("axis '/tmp/x' is not a plain name"));
     }
     SECTION("a stability bound that is not a dictionary")
     {

@@ -1,19 +1,18 @@
 #include "support/CaseRunner.hpp"
 
+#include "core/Process.hpp"
+
 #include "sphParticles/ParticlesApplication.hpp"
 #include "sphSolid/SolidApplication.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fstream>
 #include <regex>
 #include <sstream>
 
-extern char** environ;
 
 namespace sph::test
 {
@@ -71,13 +70,7 @@ int runProcess(const std::string& app, const std::vector<std::string>& args, std
     const std::filesystem::path binary = buildDir() / "bin" / app;
     const std::filesystem::path log =
         std::filesystem::temp_directory_path() / ("sphTestOutput_" + std::to_string(::getpid()));
-    std::string command = "'" + binary.string() + "'";
-    for (const auto& arg : args)
-    {
-        command += " '" + arg + "'";
-    }
-    command += " > '" + log.string() + "' 2>&1";
-    const int status = std::system(command.c_str());
+    const int status = runProgram(binary, args, log, {}, "Build the applications first.");
     if (output)
     {
         std::ifstream in(log);
@@ -86,7 +79,7 @@ int runProcess(const std::string& app, const std::vector<std::string>& args, std
         *output = text.str();
     }
     std::filesystem::remove(log);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return status;
 }
 
 double summaryValue(const std::filesystem::path& caseDir, const std::string& path)
