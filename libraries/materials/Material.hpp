@@ -38,6 +38,8 @@ namespace sph
 // around one particle each keep their own history, docs/theory/plasticity.md §P7): state i at
 // states + i * stride, and, when next is not null, the state a commit would make of it at F[i]
 // into next + i * stride and its dissipation per unit initial volume into dissipation[i].
+// A third mode: trial states only (no plastic flow) from the committed history of one particle
+// for all F[i] (the linearised evaluation of the gradient-of-F scheme, §P7).
 struct HistoryOf
 {
     std::size_t first = 0;
@@ -45,15 +47,34 @@ struct HistoryOf
     double* next = nullptr;
     double* dissipation = nullptr;
     std::size_t stride = 0;
+    bool trialAround = false;
 
     static HistoryOf particles(std::size_t first) { return {first}; }
+    static HistoryOf trialOf(std::size_t particle)
+    {
+        HistoryOf h{particle};
+        h.trialAround = true;
+        return h;
+    }
     static HistoryOf samples(const double* states, std::size_t stride, double* next = nullptr,
                              double* dissipation = nullptr)
     {
         return {0, states, next, dissipation, stride};
     }
     bool perSample() const { return states != nullptr; }
-    std::size_t particle(std::size_t i) const { return first + i; }
+    std::size_t particle(std::size_t i) const { return trialAround ? first : first + i; }
+};
+
+// The return map's correction at one F, linearised (§P7, evaluation 2): with P_tr the trial
+// (elastic) stress from the committed state, dP = P − P_tr, A = ∂dP/∂F (row-major D²×D²,
+// A(i*D+j, k*D+l) = ∂dP_ij/∂F_kl) and dW = W − W_tr. All zero where the point does not flow.
+template <int D>
+struct PlasticCorrection
+{
+    bool flowing = false;
+    Mat<D> dP = Mat<D>::Zero();
+    Eigen::Matrix<double, D * D, D * D> A = Eigen::Matrix<double, D * D, D * D>::Zero();
+    double dW = 0.0;
 };
 
 template <int D>
@@ -94,6 +115,13 @@ public:
     // first + n at their gradients F (the accepted level), returning the energy this commit
     // dissipates, Σ V0 ΔD. Called once per level, after the level was written.
     virtual bool hasHistory() const { return false; }
+    // The linearised correction of the return map at F from particle a's committed state.
+    virtual PlasticCorrection<D> plasticCorrection(const Mat<D>& F, std::size_t a) const
+    {
+        (void)F;
+        (void)a;
+        return {};
+    }
     // The committed state of particle a as historyComponents() numbers (HistoryOf::samples).
     virtual std::size_t historyComponents() const { return 0; }
     virtual void packHistory(std::size_t a, double* out) const

@@ -175,7 +175,7 @@ double J2Plasticity<D>::radialReturn(Eigen::Vector3d& eps, double alpha) const
 
 template <int D>
 typename J2Plasticity<D>::Result J2Plasticity<D>::returnMap(const Mat<D>& F, const State& committed,
-                                                            bool wantNext) const
+                                                            bool wantNext, bool flow) const
 {
     Result r;
     if constexpr (D == 1)
@@ -185,7 +185,7 @@ typename J2Plasticity<D>::Result J2Plasticity<D>::returnMap(const Mat<D>& F, con
         const double E = elastic_.E;
         double eps = 0.5 * std::log(lambda * lambda * committed.inversePlastic(0, 0));
         const double tauTrial = E * eps;
-        if (std::abs(tauTrial) > yieldStress(committed.alpha))
+        if (flow && std::abs(tauTrial) > yieldStress(committed.alpha))
         {
             r.deltaGamma = (std::abs(tauTrial) - sigmaY0_ - H_ * committed.alpha) / (E + H_);
             if (sigmaY0_ + H_ * (committed.alpha + r.deltaGamma) < 0.0)
@@ -207,7 +207,7 @@ typename J2Plasticity<D>::Result J2Plasticity<D>::returnMap(const Mat<D>& F, con
     {
         PrincipalStrain<D> p =
             principalStrain<D>(F * committed.inversePlastic * F.transpose(), committed.inversePlasticZZ);
-        r.deltaGamma = radialReturn(p.eps, committed.alpha);
+        r.deltaGamma = flow ? radialReturn(p.eps, committed.alpha) : 0.0;
         const Eigen::Vector3d tau = law_.kirchhoff(p.eps);
         const Mat<D> Finv = F.inverse();
         r.P = p.assemble(tau) * Finv.transpose();
@@ -269,7 +269,7 @@ void J2Plasticity<D>::evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::siz
     {
         if (!history.perSample())
         {
-            const Result r = returnMap(F[i], state(history.particle(i)), false);
+            const Result r = returnMap(F[i], state(history.particle(i)), false, !history.trialAround);
             P[i] = r.P;
             if (psi)
             {
@@ -299,6 +299,49 @@ void J2Plasticity<D>::evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::siz
             history.dissipation[i] = sigmaY0_ * r.deltaGamma;
         }
     }
+}
+
+template <int D>
+PlasticCorrection<D> J2Plasticity<D>::plasticCorrection(const Mat<D>& F, std::size_t a) const
+{
+    const State s = state(a);
+    const auto correction = [&](const Mat<D>& at, double* dW)
+    {
+        const Result full = returnMap(at, s, false);
+        const Result trial = returnMap(at, s, false, false);
+        if (dW)
+        {
+            *dW = full.energy - trial.energy;
+        }
+        return Mat<D>(full.P - trial.P);
+    };
+    PlasticCorrection<D> c;
+    if (!(returnMap(F, s, false).deltaGamma > 0.0))
+    {
+        return c;
+    }
+    c.flowing = true;
+    c.dP = correction(F, &c.dW);
+    const double h = 1e-7 * std::max(1.0, F.norm());
+    for (int k = 0; k < D; ++k)
+    {
+        for (int l = 0; l < D; ++l)
+        {
+            Mat<D> plus = F;
+            Mat<D> minus = F;
+            plus(k, l) += h;
+            minus(k, l) -= h;
+            const Mat<D> dPdF = (correction(plus, nullptr) - correction(minus, nullptr)) / (2 * h);
+            for (int i = 0; i < D; ++i)
+            {
+                for (int j = 0; j < D; ++j)
+                {
+                    c.A(i * D + j, k * D + l) = dPdF(i, j);
+                }
+            }
+        }
+    }
+    return c;
 }
 
 template <int D>

@@ -55,7 +55,9 @@ public:
         double maxAbsTau = 0.0;  // max |τᵢ| (for the wave-speed bound)
         State next;              // the state to commit (when asked for)
     };
-    Result returnMap(const Mat<D>& F, const State& committed, bool wantNext) const;
+    // flow = false: the trial state (the elastic predictor) only.
+    Result returnMap(const Mat<D>& F, const State& committed, bool wantNext,
+                     bool flow = true) const;
     double yieldStress(double alpha) const { return std::max(sigmaY0_ + H_ * alpha, 0.0); }
     // Ψh(α) = ∫₀^α (σy(a) − σy0) da
     double hardeningEnergy(double alpha) const;
@@ -69,6 +71,8 @@ public:
     double youngsModulus() const override { return elastic_.E; }
 
     bool hasHistory() const override { return true; }
+    // A = ∂(P − P_tr)/∂F by central differences of the closed-form return (step 1e-7 |F|).
+    PlasticCorrection<D> plasticCorrection(const Mat<D>& F, std::size_t a) const override;
     double commit(const Mat<D>* F, const double* V0, std::size_t first, std::size_t n) override;
     State state(std::size_t a) const;
 

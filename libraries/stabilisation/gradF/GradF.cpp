@@ -18,6 +18,23 @@ std::string GradF<D>::description()
 
 
 template <int D>
+Schema GradF<D>::schema()
+{
+    return Schema().add(Key::word("plasticSamples",
+                                  "materials with history: ownHistory (every stress sample keeps "
+                                  "its own; exact energy) or linearised (the return's correction "
+                                  "at F_a, linearised; for comparison)")
+                            .choices({"ownHistory", "linearised"})
+                            .defaultValue("ownHistory"));
+}
+
+template <int D>
+GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
+    : linearised_(params.word("plasticSamples") == "linearised")
+{
+}
+
+template <int D>
 ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
 {
     const NeighbourList& list = ref.neighbours;
@@ -262,10 +279,9 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 {
                     scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
                 }
-                material.evaluate(scratch.F.data(), scratch.P.data(),
-                                  wantEnergy ? scratch.psi.data() : nullptr, count,
-                                  historyAround(a, material, list, &scratch));
-                if (material.hasHistory())
+                evaluateSamples(a, material, list, count, wantEnergy ? scratch.psi.data() : nullptr,
+                                scratch, true);
+                if (material.hasHistory() && !linearised_)
                 {
                     double dissipation = 0.0;
                     for (std::size_t j = 0; j < count; ++j)
@@ -348,25 +364,59 @@ double GradF<D>::energy(const ForceInput<D>& in)
         {
             const Kinematics kin = kinematics(a, in.x, ref);
             double sum = 0.0;
-            const HistoryOf history = historyAround(a, material, list, nullptr);
-            for (std::size_t k = list.begin(a); k < list.end(a); ++k)
+            const std::size_t count = list.count(a);
+            Scratch scratch;
+            scratch.resize(count);
+            for (std::size_t j = 0; j < count; ++j)
             {
-                const Vec<D> xr = ref.x[list.indices[k]] - ref.x[a];
-                const Mat<D> Fb = kin.F + kin.G.contract(xr);
-                Mat<D> P;
-                double psi;
-                HistoryOf one = history;
-                if (one.perSample())
-                {
-                    one.states += (k - list.begin(a)) * one.stride;
-                }
-                material.evaluate(&Fb, &P, &psi, 1, one);
-                sum += weight(ref, a, k) * psi;
+                const Vec<D> xr = ref.x[list.indices[list.begin(a) + j]] - ref.x[a];
+                scratch.F[j] = kin.F + kin.G.contract(xr);
+            }
+            evaluateSamples(a, material, list, count, scratch.psi.data(), scratch, false);
+            for (std::size_t j = 0; j < count; ++j)
+            {
+                sum += weight(ref, a, list.begin(a) + j) * scratch.psi[j];
             }
             total += in.V0[a] * sum;
         }
     }
     return total;
+}
+
+template <int D>
+void GradF<D>::evaluateSamples(std::size_t a, const Material<D>& material, const NeighbourList& list,
+                               std::size_t count, double* psi, Scratch& scratch, bool pending)
+{
+    if (!(linearised_ && material.hasHistory()))
+    {
+        material.evaluate(scratch.F.data(), scratch.P.data(), psi, count,
+                          historyAround(a, material, list, pending ? &scratch : nullptr));
+        return;
+    }
+    // Evaluation 2: P_tr(F_b) + dP_a + A_a : (F_b − F_a), W_tr(F_b) + dW_a + dP_a : (F_b − F_a).
+    material.evaluate(scratch.F.data(), scratch.P.data(), psi, count, HistoryOf::trialOf(a));
+    const PlasticCorrection<D> c = material.plasticCorrection(scratch.F[0], a);
+    if (!c.flowing)
+    {
+        return;
+    }
+    for (std::size_t j = 0; j < count; ++j)
+    {
+        const Mat<D> dF = scratch.F[j] - scratch.F[0];
+        const Eigen::Matrix<double, D * D, 1> dFv = Eigen::Map<const Eigen::Matrix<double, D * D, 1>>(
+            Mat<D>(dF.transpose()).data());
+        const Eigen::Matrix<double, D * D, 1> dPv = c.A * dFv; // row-major components
+        Mat<D> dP;
+        for (int i = 0; i < D * D; ++i)
+        {
+            dP(i / D, i % D) = dPv[i];
+        }
+        scratch.P[j] += c.dP + dP;
+        if (psi)
+        {
+            psi[j] += c.dW + (c.dP.array() * dF.array()).sum();
+        }
+    }
 }
 
 template <int D>
@@ -393,6 +443,10 @@ HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
 template <int D>
 double GradF<D>::commitHistory(const HistoryCommit<D>& in)
 {
+    if (linearised_)
+    {
+        return commitParticleHistory(in); // one state per particle, committed at F_a
+    }
     commitParticleHistory(in);
     samples_.commit();
     double total = 0.0;

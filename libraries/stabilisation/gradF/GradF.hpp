@@ -11,9 +11,14 @@
 // Force: the exact -∂Π/∂x of spec §6.4 (which replaces the paper's garbled eq. 33):
 //   T_c = -Σ_a V0_a { (A_a - C_a Y_a) g_a(c) + C_a (Ŵ_ac z_ac - δ_ac s_a) }.
 // Without the gradient term (G = 0) this is exactly `none`.
-// A material with history: every sample keeps its own (SampleHistory, docs/theory/
-// plasticity.md §P7); the commit dissipates Σ_a V0_a Σ_b Ŵ_ab D(F_b(a)).
-// Keys: none.
+// A material with history (docs/theory/plasticity.md §P7), two evaluations of the samples:
+//   ownHistory  every sample keeps its own (SampleHistory), trial return at each sample; the
+//               commit dissipates Σ_a V0_a Σ_b Ŵ_ab D(F_b(a)); force = −∂Π/∂x (the default)
+//   linearised  trial stresses from a's history plus the return's correction at F_a,
+//               linearised with its tangent (evaluation 2, for comparison: not an energy
+//               gradient); the particles commit at F_a as with `none`
+// Keys:
+//   plasticSamples | ownHistory | linearised | ownHistory
 
 #include "stabilisation/CsphOperators.hpp"
 #include "stabilisation/gradF/SampleHistory.hpp"
@@ -31,8 +36,8 @@ public:
     using MatMD = Eigen::Matrix<double, M, D>;
 
     static std::string description();
-    static Schema schema() { return Schema(); }
-    GradF(const Params&, const typename Stabilisation<D>::Args&) {}
+    static Schema schema();
+    GradF(const Params& params, const typename Stabilisation<D>::Args&);
 
     ReferenceNeeds referenceNeeds(const Kernel& kernel) const override
     {
@@ -50,7 +55,10 @@ public:
     void declareHistory(const std::vector<const Material<D>*>& materials,
                         RunScalars& scalars) override
     {
-        samples_.declare(materials, scalars);
+        if (!linearised_)
+        {
+            samples_.declare(materials, scalars);
+        }
     }
     double commitHistory(const HistoryCommit<D>& in) override;
 
@@ -111,11 +119,16 @@ private:
 
     // Materials with history: the samples' states and V0_a Σ_b Ŵ_ab D_b of each particle's
     // samples at the last evaluation (what its commit dissipates).
+    bool linearised_ = false; // plasticSamples linearised
     SampleHistory<D> samples_;
     std::vector<double> sampleDissipation_;
     // Where the samples around particle a find their history (a's slots of the list).
     HistoryOf historyAround(std::size_t a, const Material<D>& material,
                             const NeighbourList& list, Scratch* scratch);
+    // P(F_b(a)) (and Ψ when psi is not null) of particle a's count samples in scratch.F; with
+    // pending, also the states a commit would make of them (a force evaluation).
+    void evaluateSamples(std::size_t a, const Material<D>& material, const NeighbourList& list,
+                         std::size_t count, double* psi, Scratch& scratch, bool pending);
 };
 
 } // namespace sph

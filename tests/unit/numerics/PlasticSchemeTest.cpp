@@ -31,11 +31,11 @@ double largest(const std::vector<Vec<D>>& T)
 }
 
 template <int D>
-void noYieldingIsHencky(const std::string& name, bool updated)
+void noYieldingIsHencky(const std::string& name, bool updated, const std::string& extra = "")
 {
-    INFO(name << (updated ? " UL" : " TL") << " " << D << "D");
+    INFO(name << extra << (updated ? " UL" : " TL") << " " << D << "D");
     test::SchemeFixture<D> hencky(test::schemeCloud<D>(7), test::schemeText<D>(name), kHencky, updated, test::schemeHOverDx<D>());
-    test::SchemeFixture<D> j2(test::schemeCloud<D>(7), test::schemeText<D>(name), kElasticJ2, updated, test::schemeHOverDx<D>());
+    test::SchemeFixture<D> j2(test::schemeCloud<D>(7), test::schemeText<D>(name) + extra, kElasticJ2, updated, test::schemeHOverDx<D>());
     const auto x = test::deformCurrent<D>(hencky.ref.x, 17);
     const auto T = hencky.forces(x);
     const auto Tj2 = j2.forces(x);
@@ -50,10 +50,10 @@ void noYieldingIsHencky(const std::string& name, bool updated)
 }
 
 template <int D>
-void plasticForces(const std::string& name, bool updated)
+void plasticForces(const std::string& name, bool updated, const std::string& extra = "")
 {
-    INFO(name << (updated ? " UL" : " TL") << " " << D << "D");
-    test::SchemeFixture<D> fixture(test::schemeCloud<D>(7), test::schemeText<D>(name), kPlastic, updated, test::schemeHOverDx<D>());
+    INFO(name << extra << (updated ? " UL" : " TL") << " " << D << "D");
+    test::SchemeFixture<D> fixture(test::schemeCloud<D>(7), test::schemeText<D>(name) + extra, kPlastic, updated, test::schemeHOverDx<D>());
     // A committed plastic history at one state, then the forces at another.
     const auto x1 = test::deformCurrent<D>(fixture.ref.x, 17);
     REQUIRE(fixture.commit(x1) > 0.0);
@@ -71,9 +71,9 @@ void plasticForces(const std::string& name, bool updated)
         sumForce += t.norm();
     }
     CHECK(total.cwiseAbs().maxCoeff() < 1e-13 * sumForce);
-    if (name == "hourglass")
+    if (name == "hourglass" || !extra.empty())
     {
-        return; // its pair forces are not an energy gradient (spec §12)
+        return; // not an energy gradient: hourglass pair forces (spec §12), linearised samples
     }
     const double step = 1e-6;
     double error = 0.0;
@@ -122,6 +122,11 @@ void everyScheme()
             noYieldingIsHencky<D>(name, updated);
             plasticForces<D>(name, updated);
             commitMovesTheDissipation<D>(name, updated);
+            if (name == "gradF")
+            {
+                noYieldingIsHencky<D>(name, updated, " plasticSamples linearised;");
+                plasticForces<D>(name, updated, " plasticSamples linearised;");
+            }
         }
     }
 }
@@ -184,4 +189,31 @@ TEST_CASE("gradF sample history follows the neighbour list when it is rebuilt",
     // A commit right after the remap: no dissipation beyond round-off (every sample kept its
     // returned state; had they restarted from their owner's, some would flow again).
     CHECK(std::abs(fixture.commit(x)) < 1e-12 * first);
+}
+
+// gradF's two evaluations agree where the deformation is affine (every sample is F_a: the
+// linearisation is then exact) from a virgin state beyond yield.
+TEST_CASE("gradF: the linearised evaluation equals the per-sample one for an affine deformation",
+          "[plasticity][scheme]")
+{
+    test::SchemeFixture<2> own(test::schemeCloud<2>(7), "type gradF;", kPlastic, false, 1.4);
+    test::SchemeFixture<2> linear(test::schemeCloud<2>(7), "type gradF; plasticSamples linearised;",
+                                  kPlastic, false, 1.4);
+    Mat<2> A;
+    A << 1.08, 0.05, -0.02, 0.93;
+    std::vector<Vec<2>> x = own.ref.x;
+    for (auto& p : x)
+    {
+        p = A * p;
+    }
+    const auto T = own.forces(x);
+    const auto Tlinear = linear.forces(x);
+    double difference = 0.0;
+    for (std::size_t a = 0; a < T.size(); ++a)
+    {
+        difference = std::max(difference, (T[a] - Tlinear[a]).cwiseAbs().maxCoeff());
+    }
+    REQUIRE(largest<2>(T) > 1e-3);
+    CHECK(difference <= 1e-9 * largest<2>(T));
+    REQUIRE(own.commit(x) > 0.0); // it does flow
 }

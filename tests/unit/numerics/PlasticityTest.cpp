@@ -467,3 +467,62 @@ TEST_CASE("j2Plasticity: impossible values are input errors naming the valid ran
 }
 
 } // namespace
+
+// The linearised correction of the gradient-of-F scheme's evaluation 2 (§P7): P ≈ P_tr + dP +
+// A : ΔF. Its error shrinks with |ΔF|² (A is the tangent of dP = P − P_tr; halving ΔF quarters
+// the error), from a state that has already flowed; without flow the correction is zero.
+template <int D>
+void linearisedCorrection()
+{
+    INFO(D << "D");
+    MaterialPoint<D> point(j2Text());
+    point.commit(stretchX<D>(1.004));
+    const Mat<D> F = stretchX<D>(1.006);
+    const PlasticCorrection<D> c = point.material->plasticCorrection(F, 0);
+    REQUIRE(c.flowing);
+    CHECK(c.dP.norm() > 0.0);
+    Mat<D> direction = Mat<D>::Zero();
+    for (int i = 0; i < D; ++i)
+    {
+        for (int j = 0; j < D; ++j)
+        {
+            direction(i, j) = 0.3 + 0.1 * i - 0.2 * j + (i == j ? 0.5 : 0.0);
+        }
+    }
+    const auto error = [&](double scale)
+    {
+        const Mat<D> dF = 1e-4 * scale * direction;
+        Mat<D> exact;
+        Mat<D> trial;
+        double psi;
+        const Mat<D> Fb = F + dF;
+        point.material->evaluate(&Fb, &exact, &psi, 1, HistoryOf::particles(0));
+        point.material->evaluate(&Fb, &trial, &psi, 1, HistoryOf::trialOf(0));
+        Eigen::Matrix<double, D * D, 1> dFv;
+        for (int i = 0; i < D * D; ++i)
+        {
+            dFv[i] = dF(i / D, i % D);
+        }
+        const Eigen::Matrix<double, D * D, 1> dPv = c.A * dFv;
+        Mat<D> linear = trial + c.dP;
+        for (int i = 0; i < D * D; ++i)
+        {
+            linear(i / D, i % D) += dPv[i];
+        }
+        return (exact - linear).norm();
+    };
+    const double coarse = error(1.0);
+    const double fine = error(0.5);
+    CHECK(coarse > 0.0);
+    CHECK(fine / coarse == Approx(0.25).margin(0.05));
+    // Elastic unloading: no correction.
+    CHECK_FALSE(point.material->plasticCorrection(stretchX<D>(1.002), 0).flowing);
+}
+
+TEST_CASE("j2Plasticity: the linearised return correction is second-order accurate",
+          "[plasticity]")
+{
+    linearisedCorrection<1>();
+    linearisedCorrection<2>();
+    linearisedCorrection<3>();
+}
