@@ -2,7 +2,8 @@
 // given intervals, postProcessing/<name>/<name>_<time>.dat, for plots of the whole body
 // without ParaView (e.g. the seed's Fig. 8, P_xx on the deformed rings).
 // Keys:
-//   fields        | any of: displacement velocity F P J body       | (P)
+//   fields        | any of: displacement velocity F P J body, or any display field of the
+//                 | registry (e.g. plasticStrain, yielding: sphSolid -listTypes)   | (P)
 //   writeInterval | time between snapshots [s] (0: every step)     | required here
 // Columns: x y (z), then the fields' components as in `probes` (P_xx P_xy ...).
 #include "core/WriteSchedule.hpp"
@@ -28,7 +29,9 @@ public:
     {
         return Schema()
             .add(Key::real("writeInterval", "time between snapshots [s]").positive())
-            .add(Key::wordList("fields", "any of: displacement velocity F P J body").defaultValue("(P)"));
+            .add(Key::wordList("fields", "any of: displacement velocity F P J body, or a display "
+                                         "field of the models (plasticStrain, yielding, ...)")
+                     .defaultValue("(P)"));
     }
 
     Snapshot(const Params& params, const typename FunctionObject<D>::Args& args)
@@ -36,15 +39,29 @@ public:
           schedule_(params.real("writeInterval"), params.location("writeInterval")),
           fields_(params.wordList("fields")), folder_(args.caseDir / "postProcessing" / args.name)
     {
-        static const std::vector<std::string> known{"displacement", "velocity", "F", "P", "J",
-                                                    "body"};
+        std::vector<std::string> known{"displacement", "velocity", "F", "P", "J", "body"};
+        const std::size_t builtIn = known.size();
+        if (args.fields)
+        {
+            for (const auto& field : args.fields->all())
+            {
+                if (field.spec.isDisplay() && field.spec.kind() != FieldKind::thirdOrderTensor)
+                {
+                    known.push_back(field.spec.name());
+                }
+            }
+        }
         for (std::size_t i = 0; i < fields_.size(); ++i)
         {
-            if (std::find(known.begin(), known.end(), fields_[i]) == known.end())
+            const auto at = std::find(known.begin(), known.end(), fields_[i]);
+            if (at == known.end())
             {
                 params.fail("fields", i, "snapshot: unknown field '" + fields_[i] + "'",
                             {"Valid fields: " + joinSorted(known), didYouMean(fields_[i], known)});
             }
+            registry_.push_back(static_cast<std::size_t>(at - known.begin()) < builtIn
+                                    ? nullptr
+                                    : args.fields->find(fields_[i]));
         }
     }
 
@@ -72,9 +89,26 @@ public:
         {
             out << " " << axes[d];
         }
-        for (const auto& field : fields_)
+        for (std::size_t f = 0; f < fields_.size(); ++f)
         {
-            if (field == "J" || field == "body")
+            const std::string& field = fields_[f];
+            if (registry_[f])
+            {
+                const int n = registry_[f]->components();
+                for (int c = 0; c < n; ++c)
+                {
+                    out << " " << field;
+                    if (n == D)
+                    {
+                        out << "_" << axes[c];
+                    }
+                    else if (n > 1)
+                    {
+                        out << "_" << axes[c / D] << axes[c % D];
+                    }
+                }
+            }
+            else if (field == "J" || field == "body")
             {
                 out << " " << field;
             }
@@ -109,9 +143,19 @@ public:
             {
                 put(p.x[a][d]);
             }
-            for (const auto& field : fields_)
+            for (std::size_t f = 0; f < fields_.size(); ++f)
             {
-                if (field == "J")
+                const std::string& field = fields_[f];
+                if (registry_[f])
+                {
+                    double values[9];
+                    registry_[f]->array->get(a, values);
+                    for (int c = 0; c < registry_[f]->components(); ++c)
+                    {
+                        put(values[c]);
+                    }
+                }
+                else if (field == "J")
                 {
                     put(p.F[a].determinant());
                 }
@@ -163,6 +207,8 @@ public:
 private:
     WriteSchedule schedule_;
     std::vector<std::string> fields_;
+    // The registry field of each entry of fields_ (null for the built-in ones).
+    std::vector<const typename ParticleFields<D>::Field*> registry_;
     std::filesystem::path folder_;
     long written_ = 0;
 };
