@@ -9,6 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 using namespace sph;
 
@@ -20,6 +23,18 @@ void checkImpactBalance(const std::string& formulation, const std::string& schem
     INFO(formulation << " " << scheme);
     test::TempDir dir;
     const auto caseDir = test::copyTutorial("plasticity2D/impact", dir.path());
+    // A snapshot of the materials' display fields (any registry field, not only built-ins).
+    {
+        std::ifstream in(caseDir / "system" / "controlDict");
+        std::stringstream text;
+        text << in.rdbuf();
+        std::string dict = text.str();
+        const auto at = dict.find("functions\n{");
+        REQUIRE(at != std::string::npos);
+        dict.insert(at + 11, "\n    section { type snapshot; writeInterval 5e-6; "
+                             "fields (plasticStrain yielding); }");
+        std::ofstream(caseDir / "system" / "controlDict") << dict;
+    }
     REQUIRE(test::runParticles(caseDir) == 0);
     REQUIRE(test::runSolver(caseDir, {"-set", "endTime=10e-6", "-set",
                                       "formulation.type=" + formulation, "-set",
@@ -35,6 +50,29 @@ void checkImpactBalance(const std::string& formulation, const std::string& schem
     const double initial = energy.column("kinetic").front();
     CHECK(energy.column("dissipated").back() > 0.1 * initial);
     CHECK(energy.column("wallPotential").back() >= 0.0);
+    // The last snapshot (10 µs): the plastic strain grows from zero (the foot flows) and the
+    // yielding flag is 0 or 1.
+    std::filesystem::path last; // section_<time>.dat of the latest time
+    double lastTime = -1.0;
+    for (const auto& file : std::filesystem::directory_iterator(caseDir / "postProcessing/section"))
+    {
+        const std::string name = file.path().stem().string();
+        const double time = std::stod(name.substr(name.find('_') + 1));
+        if (time > lastTime)
+        {
+            lastTime = time;
+            last = file.path();
+        }
+    }
+    REQUIRE(lastTime > 9e-6);
+    const auto section = test::readTable(last);
+    const auto alpha = section.column("plasticStrain");
+    CHECK(*std::max_element(alpha.begin(), alpha.end()) > 0.1);
+    CHECK(*std::min_element(alpha.begin(), alpha.end()) == 0.0);
+    for (const double flag : section.column("yielding"))
+    {
+        CHECK((flag == 0.0 || flag == 1.0));
+    }
 }
 
 } // namespace
