@@ -113,8 +113,10 @@ public:
     virtual void execute(const StepState<D>& state) = 0;
     // Lines for the end-of-run summary (e.g. error norms).
     virtual std::vector<std::string> report() const { return {}; }
-    // Named results for the run's postProcessing/summary.json (e.g. error norms).
+    // Named results for the run's postProcessing/summary.json (e.g. error norms)...
     virtual std::map<std::string, double> results() const { return {}; }
+    // ...and words (e.g. a verdict), written as JSON strings.
+    virtual std::map<std::string, std::string> textResults() const { return {}; }
     // Running quantities that a restart must continue (energy reference, error norms, ...).
     virtual void saveState(std::map<std::string, double>&) const {}
     virtual void restoreState(const std::map<std::string, double>&) {}

@@ -80,6 +80,10 @@ void Simulation<D>::writeSummary(const RunSummary& summary, const std::string& f
         {
             results[key] = value;
         }
+        for (const auto& [key, value] : object->textResults())
+        {
+            results[key] = value;
+        }
     }
     writeTextAtomically(dicts_.caseDir() / "postProcessing" / "summary.json", json.dump(4) + "\n");
 }

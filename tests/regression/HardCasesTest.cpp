@@ -5,7 +5,10 @@
 #include "support/CaseRunner.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <iostream>
+
+#include <nlohmann/json.hpp>
 
 using namespace sph;
 
@@ -33,6 +36,15 @@ std::vector<std::string> withSets(const std::vector<std::string>& sets)
         args.insert(args.end(), {"-set", set});
     }
     return args;
+}
+
+// A word of postProcessing/summary.json: functions/<object>/<key>.
+std::string summaryText(const std::filesystem::path& caseDir, const std::string& object,
+                        const std::string& key)
+{
+    std::ifstream in(caseDir / "postProcessing" / "summary.json");
+    const nlohmann::json json = nlohmann::json::parse(in);
+    return json.at("functions").at(object).at(key).get<std::string>();
 }
 
 } // namespace
@@ -94,6 +106,30 @@ TEST_CASE("hard case zero-energy mode: the seeded checkerboard stays bounded thr
               << closest << " spacings\n";
     CHECK(indicator < 0.1);
     CHECK(closest > 0.5);
+    CHECK(summaryText(caseDir, "stability", "verdict") == "stable");
+}
+
+// A broken run says so (issue 12 item 15): the same slam without stabilisation, updated-
+// Lagrangian, collapses the block; the run completes but the stability monitor's verdict in the
+// log and in summary.json is "unstable", naming the deciding figure and its bound.
+TEST_CASE("hard case zero-energy mode: without stabilisation the run ends with the verdict "
+          "unstable",
+          "[hardCases]")
+{
+    test::TempDir dir;
+    const auto caseDir = prepare(dir, "zeroEnergyMode");
+    std::vector<std::string> args{"-case", caseDir.string()};
+    for (const auto& word : withSets({"maxSteps=2500", "formulation.type=updatedLagrangian",
+                                      "stabilisation.type=none"}))
+    {
+        args.push_back(word);
+    }
+    std::string output;
+    REQUIRE(test::runProcess("sphSolid", args, &output) == 0);
+    CHECK(summaryText(caseDir, "stability", "verdict") == "unstable");
+    CHECK_THAT(summaryText(caseDir, "stability", "verdictReason"),
+               Catch::Contains("(stable >= 0.5, unstable < 0.1)"));
+    CHECK_THAT(output, Catch::Contains("stability: verdict UNSTABLE: smallest neighbour distance"));
 }
 
 TEST_CASE("hard case fast rings: the rings bounce whole at 2.4 m/s", "[hardCases]")

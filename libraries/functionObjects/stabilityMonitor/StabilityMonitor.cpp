@@ -12,9 +12,17 @@
 //   minJ maxJ            extremes of det F
 //   minDistanceRatio     the smallest distance between neighbours over the initial spacing
 //                        (particles clumping or crossing make it drop towards 0)
+// Verdict at the end of the run (log and summary.json `verdict`, `verdictReason`), from the
+// worst values over the run, with the bounds the hard cases use (tutorials/hardCases/README.md):
+//   stable     closest neighbours >= 0.5 of the initial spacing and indicator <= 0.5
+//   unstable   closest neighbours < 0.1 of the initial spacing or indicator > 1 (particles
+//              pair up or a zero-energy pattern is as large as the kernel)
+//   suspect    in between (large plastic flow legitimately brings neighbours closer: look)
 // Keys: writeInterval (see FunctionObject.hpp).
 #include "functionObjects/FunctionObjectModel.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <limits>
 
 namespace sph
@@ -100,7 +108,19 @@ public:
                       "%s: zero-energy indicator at the end %.3e, largest %.3e; smallest "
                       "neighbour distance / initial spacing %.3f",
                       this->name().c_str(), last_, maxIndicator_, minDistanceRatio_);
-        return {line};
+        const Verdict v = verdict();
+        std::string word = v.word;
+        if (word != "stable")
+        {
+            std::transform(word.begin(), word.end(), word.begin(),
+                           [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+        }
+        return {line, this->name() + ": verdict " + word + ": " + v.reason};
+    }
+    std::map<std::string, std::string> textResults() const override
+    {
+        const Verdict v = verdict();
+        return {{"verdict", v.word}, {"verdictReason", v.reason}};
     }
     std::map<std::string, double> results() const override
     {
@@ -136,6 +156,50 @@ public:
     }
 
 private:
+    static constexpr double stableDistance = 0.5;
+    static constexpr double unstableDistance = 0.1;
+    static constexpr double stableIndicator = 0.5;
+    static constexpr double unstableIndicator = 1.0;
+    struct Verdict
+    {
+        std::string word;
+        std::string reason;
+    };
+    // The deciding figure: the worse of the two measures against its bounds.
+    Verdict verdict() const
+    {
+        if (minDistanceRatio_ == std::numeric_limits<double>::max())
+        {
+            return {"unknown", "no level was monitored"};
+        }
+        char distance[160];
+        std::snprintf(distance, sizeof distance,
+                      "smallest neighbour distance %.3g of the initial spacing (stable >= %.1f, "
+                      "unstable < %.1f)",
+                      minDistanceRatio_, stableDistance, unstableDistance);
+        char indicator[160];
+        std::snprintf(indicator, sizeof indicator,
+                      "largest zero-energy indicator %.3g (stable <= %.1f, unstable > %.1f)",
+                      maxIndicator_, stableIndicator, unstableIndicator);
+        if (minDistanceRatio_ < unstableDistance)
+        {
+            return {"unstable", distance};
+        }
+        if (maxIndicator_ > unstableIndicator)
+        {
+            return {"unstable", indicator};
+        }
+        if (minDistanceRatio_ < stableDistance)
+        {
+            return {"suspect", distance};
+        }
+        if (maxIndicator_ > stableIndicator)
+        {
+            return {"suspect", indicator};
+        }
+        return {"stable", std::string(distance) + "; " + indicator};
+    }
+
     // The particle spacing: V0^(1/D) of the median particle.
     static double initialSpacing(const ParticleSet<D>& p)
     {
