@@ -367,13 +367,7 @@ const VtuArray& VtuChecks::pointArray(const std::string& name, int components) c
              " values for " + std::to_string(data_.pointCount()) + " particles (" +
              std::to_string(expected) + " expected)");
     }
-    for (std::size_t i = 0; i < array.values.size(); ++i)
-    {
-        if (!std::isfinite(array.values[i]))
-        {
-            failAt(name, array, i, "is " + exact(array.values[i]) + "; it must be finite");
-        }
-    }
+    finite(name, array);
     return array;
 }
 
@@ -390,6 +384,12 @@ const VtuArray& VtuChecks::fieldArray(const std::string& name, std::size_t size)
         fail("its field data '" + name + "' holds " + std::to_string(array.values.size()) +
              " values, not " + std::to_string(size));
     }
+    finite(name, array);
+    return array;
+}
+
+void VtuChecks::finite(const std::string& name, const VtuArray& array) const
+{
     for (std::size_t i = 0; i < array.values.size(); ++i)
     {
         if (!std::isfinite(array.values[i]))
@@ -397,7 +397,6 @@ const VtuArray& VtuChecks::fieldArray(const std::string& name, std::size_t size)
             failAt(name, array, i, "is " + exact(array.values[i]) + "; it must be finite");
         }
     }
-    return array;
 }
 
 void VtuChecks::positive(const std::string& name, const VtuArray& array) const

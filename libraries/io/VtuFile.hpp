@@ -76,6 +76,7 @@ public:
 
 private:
     bool perPoint(const VtuArray& array) const;
+    void finite(const std::string& name, const VtuArray& array) const;
 
     const VtuData& data_;
     std::string subject_;
