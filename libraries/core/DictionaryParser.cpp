@@ -125,8 +125,10 @@ private:
     std::string describe(const Token& token, int errorLine) const
     {
         static const std::map<Token::Kind, const char*> textual = {
-            {Token::Kind::Word, "a word"},         {Token::Kind::Number, "a number"},
-            {Token::Kind::String, "a string"},     {Token::Kind::Variable, "a variable"},
+            {Token::Kind::Word, "a word"},
+            {Token::Kind::Number, "a number"},
+            {Token::Kind::String, "a string"},
+            {Token::Kind::Variable, "a variable"},
             {Token::Kind::Directive, "a directive"}};
         const auto kind = textual.find(token.kind);
         if (!confined_ || kind == textual.end() || shows(token.text, token.where.line, errorLine))
@@ -167,12 +169,12 @@ private:
             case Token::Kind::End:
                 if (open)
                 {
-                    throw InputError(open->where,
-                                     "unterminated '{': the dictionary " +
-                                         entryName(dict.displayName(), dict.location().line,
-                                                   open->where.line) +
-                                         "opened here is never closed",
-                                     {"Add the matching '}'."});
+                    throw InputError(
+                        open->where,
+                        "unterminated '{': the dictionary " +
+                            entryName(dict.displayName(), dict.location().line, open->where.line) +
+                            "opened here is never closed",
+                        {"Add the matching '}'."});
                 }
                 return;
             case Token::Kind::CloseBrace:
@@ -197,7 +199,8 @@ private:
                 parseEntry(lexer, dict);
                 break;
             default:
-                throw InputError(token.where, "expected a key, found " + describe(token, token.where.line),
+                throw InputError(token.where,
+                                 "expected a key, found " + describe(token, token.where.line),
                                  {"An entry is 'key value;' or 'name { ... }'."});
             }
         }
@@ -266,7 +269,9 @@ private:
         }
         if (items.empty())
         {
-            throw InputError(key.where, "the entry " + entryName(key.text, key.where.line, key.where.line) + "has no value",
+            throw InputError(key.where,
+                             "the entry " + entryName(key.text, key.where.line, key.where.line) +
+                                 "has no value",
                              {"Write 'key value;' (or 'key { ... }' for a dictionary)."});
         }
         dict.add(Entry(key.text, key.where, std::move(items)));
@@ -309,9 +314,10 @@ private:
                 if (inner.kind == Token::Kind::End || inner.kind == Token::Kind::Semicolon ||
                     inner.kind == Token::Kind::OpenBrace || inner.kind == Token::Kind::CloseBrace)
                 {
-                    throw InputError(
-                        token.where, "unterminated '(': the list opened here has no ')'",
-                        {"Found " + describe(inner, token.where.line) + " before the closing ')'."});
+                    throw InputError(token.where,
+                                     "unterminated '(': the list opened here has no ')'",
+                                     {"Found " + describe(inner, token.where.line) +
+                                      " before the closing ')'."});
                 }
                 appendItem(lexer, content, scope);
             }
@@ -326,7 +332,8 @@ private:
             break;
         }
         default:
-            throw InputError(token.where, "unexpected " + describe(token, token.where.line) + " in a value",
+            throw InputError(token.where,
+                             "unexpected " + describe(token, token.where.line) + " in a value",
                              {"A value is made of words, numbers, \"strings\" and (lists)."});
         }
         if (last)
@@ -349,7 +356,8 @@ private:
             {
                 notes.push_back(hint);
             }
-            throw InputError(variable.where, "undefined variable '$" + shownName(variable) + "'", notes);
+            throw InputError(variable.where, "undefined variable '$" + shownName(variable) + "'",
+                             notes);
         }
         entry->markReferenced();
         return *entry;
@@ -402,14 +410,16 @@ private:
         const Token directive = lexer.take();
         if (directive.text != "#include")
         {
-            throw InputError(directive.where, "unknown directive " + describe(directive, directive.where.line),
+            throw InputError(directive.where,
+                             "unknown directive " + describe(directive, directive.where.line),
                              {"The only directive is #include \"file\"."});
         }
         const Token file = lexer.take();
         if (file.kind != Token::Kind::String)
         {
             throw InputError(file.where,
-                             "#include needs a quoted file name, found " + describe(file, file.where.line),
+                             "#include needs a quoted file name, found " +
+                                 describe(file, file.where.line),
                              {"Write #include \"fileName\" (relative to this file)."});
         }
         const std::filesystem::path here = path_.parent_path();
@@ -458,7 +468,7 @@ private:
     std::filesystem::path path_;
     std::vector<std::filesystem::path> includeStack_;
     std::vector<std::string> includeNames_; // display names of the same files
-    bool confined_;                          // an included file: see the constructor
+    bool confined_;                         // an included file: see the constructor
 };
 
 } // namespace

@@ -26,9 +26,8 @@ std::string build(const SourceLocation& where, const std::string& message,
 // are not one (a stray continuation byte, an overlong form, a surrogate, a cut sequence).
 std::size_t utf8Length(const std::string& text, std::size_t i)
 {
-    const auto byte = [&](std::size_t k) {
-        return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u;
-    };
+    const auto byte = [&](std::size_t k)
+    { return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u; };
     const unsigned lead = byte(i);
     std::size_t length = 0;
     unsigned low = 0x80;
@@ -80,8 +79,9 @@ Shown shownAt(const std::string& text, std::size_t i)
 {
     const auto byte = static_cast<unsigned char>(text[i]);
     const std::size_t length = utf8Length(text, i);
-    const bool control = (byte < 0x20 && byte != '\n' && byte != '\t') || byte == 0x7f ||
-                         (length == 2 && byte == 0xc2 && static_cast<unsigned char>(text[i + 1]) < 0xa0);
+    const bool control =
+        (byte < 0x20 && byte != '\n' && byte != '\t') || byte == 0x7f ||
+        (length == 2 && byte == 0xc2 && static_cast<unsigned char>(text[i + 1]) < 0xa0);
     return length == 0 || control ? Shown{1, true} : Shown{length, false};
 }
 
@@ -166,7 +166,8 @@ std::string formatDiagnostic(const SourceLocation& where, const std::string& mes
                 }
             }
             text += "    " + lead + shown + '\n';
-            const std::string pad = std::string(lead.size(), ' ') + caretPadding(line, first, column);
+            const std::string pad =
+                std::string(lead.size(), ' ') + caretPadding(line, first, column);
             const auto length = static_cast<std::size_t>(std::max(1, where.length));
             const std::size_t room = first + window > column ? first + window - column : 1;
             text += "    " + pad + '^' + std::string(std::min(length, std::max<std::size_t>(room, 1)) - 1, '~') +

@@ -340,8 +340,8 @@ void VtuChecks::finitePoints() const
         if (!std::isfinite(data_.points[i]))
         {
             const double* x = &data_.points[i - i % 3];
-            fail(particle(i / 3) + " has the position (" + formatNumber(x[0]) +
-                 " " + formatNumber(x[1]) + " " + formatNumber(x[2]) +
+            fail(particle(i / 3) + " has the position (" + formatNumber(x[0]) + " " +
+                 formatNumber(x[1]) + " " + formatNumber(x[2]) +
                  "); every coordinate must be finite");
         }
     }
@@ -419,9 +419,8 @@ void VtuChecks::wholeNumbers(const std::string& name, const VtuArray& array, dou
         if (!(value >= lowest && value <= highest) || value != std::floor(value))
         {
             failAt(name, array, i,
-                   "is " + exact(value) + "; it must be a whole number from " +
-                       exact(lowest) + " to " + exact(highest) + " (" +
-                       meaning + ")");
+                   "is " + exact(value) + "; it must be a whole number from " + exact(lowest) +
+                       " to " + exact(highest) + " (" + meaning + ")");
         }
     }
 }

@@ -63,8 +63,8 @@ public:
     // Every value of `array` (the point array or field data `name`) is > 0.
     void positive(const std::string& name, const VtuArray& array) const;
     // Whole numbers from `lowest` to `highest`; `meaning` says what the range is.
-    void wholeNumbers(const std::string& name, const VtuArray& array, double lowest,
-                      double highest, const std::string& meaning) const;
+    void wholeNumbers(const std::string& name, const VtuArray& array, double lowest, double highest,
+                      const std::string& meaning) const;
 
     // Fails about value `index` of `array` (named `name`): particle and position when per point.
     [[noreturn]] void failAt(const std::string& name, const VtuArray& array, std::size_t index,

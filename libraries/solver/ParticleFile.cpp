@@ -44,9 +44,8 @@ std::string spanProblem(const InitialParticles& particles)
     const std::size_t n = particles.size();
     for (int d = 0; d < particles.dimension && n > 0; ++d)
     {
-        const auto coordinate = [&](std::size_t a) {
-            return particles.X[3 * a + static_cast<std::size_t>(d)];
-        };
+        const auto coordinate = [&](std::size_t a)
+        { return particles.X[3 * a + static_cast<std::size_t>(d)]; };
         std::vector<double> sorted(n);
         for (std::size_t a = 0; a < n; ++a)
         {

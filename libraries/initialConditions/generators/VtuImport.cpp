@@ -57,8 +57,8 @@ private:
         {
             if (data.pointData.count(volumeArray_) == 0)
             {
-                p.fail("volumeArray", "vtu: '" + file_.string() + "' has no point array '" +
-                                          volumeArray_ + "'");
+                p.fail("volumeArray",
+                       "vtu: '" + file_.string() + "' has no point array '" + volumeArray_ + "'");
             }
             volumes = &checks.pointArray(volumeArray_, 1);
             checks.positive(volumeArray_, *volumes);

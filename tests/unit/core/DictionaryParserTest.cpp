@@ -331,12 +331,16 @@ TEST_CASE("an included file that is not a dictionary is quoted by its offending 
 TEST_CASE("binary content is shown escaped, valid UTF-8 as it is", "[parser][errors]")
 {
     sph::test::TempDir dir;
-    dir.write("blob", std::string("\x7f" "ELF\x02\x01\x01", 7) + std::string(3, '\0') +
-                          "\xff\xfe\x80 \xc3" "A \xce\xbb }\n");
+    dir.write("blob", std::string("\x7f"
+                                  "ELF\x02\x01\x01",
+                                  7) +
+                          std::string(3, '\0') +
+                          "\xff\xfe\x80 \xc3"
+                          "A \xce\xbb }\n");
     const std::string text = includeError(dir, "blob");
     CHECK_THAT(text, Catch::Contains("\\x7fELF\\x02\\x01\\x01\\x00\\x00\\x00\\xff\\xfe\\x80"));
     CHECK_THAT(text, Catch::Contains("missing ';' after the value of '\\x7fELF"));
-    CHECK_THAT(text, Catch::Contains("\\xc3A")); // a cut sequence: the lead byte escaped
+    CHECK_THAT(text, Catch::Contains("\\xc3A"));   // a cut sequence: the lead byte escaped
     CHECK_THAT(text, Catch::Contains("\xce\xbb")); // λ stays readable
     CHECK(text.find('\xff') == std::string::npos);
     CHECK(text.find('\x80') == std::string::npos);

@@ -74,7 +74,8 @@ void requireParticleFileError(const std::function<void(VtuData&)>& change,
     damage(file, change);
     auto all = fragments;
     all.push_back(file.string() + ": ");
-    all.push_back("The file is damaged or was not written by sphParticles; run sphParticles again.");
+    all.push_back(
+        "The file is damaged or was not written by sphParticles; run sphParticles again.");
     requireInputFailure("sphSolid", caseDir, {"-dryRun"}, all);
 }
 
@@ -94,7 +95,8 @@ TEST_CASE("particle file: a body id out of range names the particle and the vali
     requireParticleFileError([](VtuData& d) { values(d, "bodyId")[1] = -1; },
                              {"particle 1 (at 0.01 0 0): its array 'bodyId' is -1"});
     requireParticleFileError(
-        [](VtuData& d) {
+        [](VtuData& d)
+        {
             auto& bodyId = d.pointData.at("bodyId");
             bodyId.integer = false; // written as Float64: an Int32 cannot hold 0.5
             bodyId.values[2] = 0.5;
@@ -112,30 +114,34 @@ TEST_CASE("particle file: the spacing must be finite and positive", "[particleFi
                              {"its field data 'spacing' is nan; it must be finite"});
     requireParticleFileError([](VtuData& d) { d.fieldData.at("spacing").values.clear(); },
                              {"its field data 'spacing' holds 0 values, not 1"});
-    requireParticleFileError([](VtuData& d) { d.fieldData.at("dimension").values[0] = 7; },
-                             {"its field data 'dimension' is 7; it must be a whole number from 1 to 3"});
+    requireParticleFileError(
+        [](VtuData& d) { d.fieldData.at("dimension").values[0] = 7; },
+        {"its field data 'dimension' is 7; it must be a whole number from 1 to 3"});
 }
 
 TEST_CASE("particle file: positions must be finite and within reach of the neighbour grid",
           "[particleFile]")
 {
-    requireParticleFileError([](VtuData& d) { d.points[3 * 2] = notANumber; },
-                             {"particle 2 has the position (nan 0 0); every coordinate must be finite"});
-    requireParticleFileError([](VtuData& d) { d.points[3 * 3] = 1e308; },
-                             {"particle 3 has x = 1e+308, but the particles must lie within 1e+06 spacings"});
+    requireParticleFileError(
+        [](VtuData& d) { d.points[3 * 2] = notANumber; },
+        {"particle 2 has the position (nan 0 0); every coordinate must be finite"});
+    requireParticleFileError(
+        [](VtuData& d) { d.points[3 * 3] = 1e308; },
+        {"particle 3 has x = 1e+308, but the particles must lie within 1e+06 spacings"});
 }
 
-TEST_CASE("particle file: volumes must be finite and positive, one per particle",
-          "[particleFile]")
+TEST_CASE("particle file: volumes must be finite and positive, one per particle", "[particleFile]")
 {
     requireParticleFileError([](VtuData& d) { values(d, "volume")[3] = 0; },
                              {"particle 3 (at 0.03 0 0): its array 'volume' is 0; it must be > 0"});
     requireParticleFileError([](VtuData& d) { values(d, "volume")[0] = -1; },
                              {"particle 0 (at 0 0 0): its array 'volume' is -1; it must be > 0"});
-    requireParticleFileError([](VtuData& d) { values(d, "volume")[1] = notANumber; },
-                             {"particle 1 (at 0.01 0 0): its array 'volume' is nan; it must be finite"});
     requireParticleFileError(
-        [](VtuData& d) {
+        [](VtuData& d) { values(d, "volume")[1] = notANumber; },
+        {"particle 1 (at 0.01 0 0): its array 'volume' is nan; it must be finite"});
+    requireParticleFileError(
+        [](VtuData& d)
+        {
             auto& volume = d.pointData.at("volume");
             volume.components = 5;
             volume.values.resize(25, 1e-2);
@@ -156,8 +162,9 @@ TEST_CASE("restart: a damaged output is an input error naming the file, array an
     REQUIRE(!series.entries().empty());
     const auto file = caseDir / "VTK" / series.entries().back().file;
     const VtuData good = readVtu(file);
-    const auto restartWith = [&](const std::function<void(VtuData&)>& change,
-                                 const std::string& fragment) {
+    const auto restartWith =
+        [&](const std::function<void(VtuData&)>& change, const std::string& fragment)
+    {
         writeVtu(file, good);
         damage(file, change);
         requireInputFailure("sphSolid", caseDir,
@@ -165,19 +172,21 @@ TEST_CASE("restart: a damaged output is an input error naming the file, array an
                             {"cannot restart from '" + file.string() + "': " + fragment,
                              "start afresh with startFrom startTime"});
     };
-    restartWith([](VtuData& d) { values(d, "restart:initialVolume")[2] = notANumber; },
-                "particle 2 (at 0.02 0 0): its array 'restart:initialVolume' is nan; it must be finite");
     restartWith(
-        [](VtuData& d) {
-            values(d, "restart:velocityHalfStep")[4] = -std::numeric_limits<double>::infinity();
-        },
-        "particle 4 (at 0.04 0 0): its array 'restart:velocityHalfStep' is -inf; it must be finite");
+        [](VtuData& d) { values(d, "restart:initialVolume")[2] = notANumber; },
+        "particle 2 (at 0.02 0 0): its array 'restart:initialVolume' is nan; it must be finite");
     restartWith(
-        [](VtuData& d) {
+        [](VtuData& d)
+        { values(d, "restart:velocityHalfStep")[4] = -std::numeric_limits<double>::infinity(); },
+        "particle 4 (at 0.04 0 0): its array 'restart:velocityHalfStep' is -inf; it must be "
+        "finite");
+    restartWith(
+        [](VtuData& d)
+        {
             d.pointData.at("fixed").integer = false; // as Float64, to hold 0.5
             values(d, "fixed")[0] = 0.5;
         },
-                "particle 0 (at 0 0 0): its array 'fixed' is 0.5; it must be a whole number");
+        "particle 0 (at 0 0 0): its array 'fixed' is 0.5; it must be a whole number");
     restartWith([](VtuData& d) { d.points[3] = notANumber; },
                 "particle 1 has the position (nan 0 0)");
     restartWith([](VtuData& d) { d.fieldData.at("restart:step").values[0] = 1e300; },
@@ -198,8 +207,9 @@ TEST_CASE("vtu import: a point set with NaN or a non-positive volume is an input
     REQUIRE(test::runParticles(caseDir) == 0); // the undamaged file imports
 
     const VtuData good = readVtu(imported);
-    const auto importWith = [&](const std::function<void(VtuData&)>& change,
-                                const std::vector<std::string>& fragments) {
+    const auto importWith =
+        [&](const std::function<void(VtuData&)>& change, const std::vector<std::string>& fragments)
+    {
         writeVtu(imported, good);
         damage(imported, change);
         requireInputFailure("sphParticles", caseDir, {}, fragments);
@@ -208,8 +218,9 @@ TEST_CASE("vtu import: a point set with NaN or a non-positive volume is an input
     const std::string hint = "every coordinate and volume must be finite, every volume > 0";
     importWith([](VtuData& d) { d.points[3 * 4] = notANumber; },
                {name + "particle 4 has the position (nan 0 0)", hint});
-    importWith([](VtuData& d) { values(d, "volume")[2] = -1e-2; },
-               {name + "particle 2 (at 0.02 0 0): its array 'volume' is -0.01; it must be > 0", hint});
+    importWith(
+        [](VtuData& d) { values(d, "volume")[2] = -1e-2; },
+        {name + "particle 2 (at 0.02 0 0): its array 'volume' is -0.01; it must be > 0", hint});
     // Far out but finite: the bodies are checked together, before sphParticles writes them.
     importWith([](VtuData& d) { d.points[3 * 4] = 1e308; },
                {"system/particlesDict: particle 4 has x = 1e+308", "Check the bodies' positions"});
