@@ -5,6 +5,7 @@
 #include "Suggest.hpp"
 #include "TextFile.hpp"
 
+#include <map>
 
 namespace sph
 {
@@ -49,10 +50,13 @@ std::string readFile(const std::filesystem::path& path)
 class Parser
 {
 public:
+    // `included`: the file was named by an #include, which may name any file the user can read
+    // (/etc/shadow, /proc/self/environ); its messages then quote nothing the quoted line does
+    // not show (issue 12 item 2).
     Parser(std::filesystem::path path, std::vector<std::filesystem::path> includeStack,
-           std::vector<std::string> includeNames = {})
+           std::vector<std::string> includeNames = {}, bool included = false)
         : path_(std::move(path)), includeStack_(std::move(includeStack)),
-          includeNames_(std::move(includeNames))
+          includeNames_(std::move(includeNames)), confined_(included)
     {
     }
 
@@ -106,7 +110,7 @@ private:
         if (copied_ > maxCopiedItems)
         {
             throw InputError(variable.where,
-                             "'$" + variable.text + "' makes the file expand to more than " +
+                             "'$" + shownName(variable) + "' makes the file expand to more than " +
                                  std::to_string(maxCopiedItems) + " copied values",
                              {"Variables that copy each other repeatedly grow exponentially; "
                               "copy the values you need once."});
@@ -115,6 +119,44 @@ private:
 
     int depth_ = 0;
     std::size_t copied_ = 0;
+
+    // A token as a message names it. In an included file only a short token on the line the
+    // error quotes is shown; any other is named by its kind and line, never by its text.
+    std::string describe(const Token& token, int errorLine) const
+    {
+        static const std::map<Token::Kind, const char*> textual = {
+            {Token::Kind::Word, "a word"},
+            {Token::Kind::Number, "a number"},
+            {Token::Kind::String, "a string"},
+            {Token::Kind::Variable, "a variable"},
+            {Token::Kind::Directive, "a directive"}};
+        const auto kind = textual.find(token.kind);
+        if (!confined_ || kind == textual.end() || shows(token.text, token.where.line, errorLine))
+        {
+            return describeToken(token); // punctuation and the end show no file content
+        }
+        return std::string(kind->second) + " on line " + std::to_string(token.where.line);
+    }
+
+    // The name of an entry as a message quotes it ("'bar' "), or "" where describe() would not
+    // show its text.
+    std::string entryName(const std::string& key, int keyLine, int errorLine) const
+    {
+        return !confined_ || shows(key, keyLine, errorLine) ? "'" + key + "' " : "";
+    }
+
+    // A variable's name in a message: "..." for a long one in an included file.
+    std::string shownName(const Token& variable) const
+    {
+        return !confined_ || shows(variable.text, 0, 0) ? variable.text : "...";
+    }
+
+    // Text the quoted line shows anyway: on that line and short enough for its window.
+    static bool shows(const std::string& text, int line, int errorLine)
+    {
+        constexpr std::size_t longest = 40;
+        return line == errorLine && text.size() <= longest;
+    }
 
     // Entries up to a closing brace (when `open` is given) or the end of input.
     void parseBody(Lexer& lexer, Dictionary& dict, const Token* open)
@@ -127,10 +169,12 @@ private:
             case Token::Kind::End:
                 if (open)
                 {
-                    throw InputError(open->where,
-                                     "unterminated '{': the dictionary '" + dict.displayName() +
-                                         "' opened here is never closed",
-                                     {"Add the matching '}'."});
+                    throw InputError(
+                        open->where,
+                        "unterminated '{': the dictionary " +
+                            entryName(dict.displayName(), dict.location().line, open->where.line) +
+                            "opened here is never closed",
+                        {"Add the matching '}'."});
                 }
                 return;
             case Token::Kind::CloseBrace:
@@ -155,7 +199,8 @@ private:
                 parseEntry(lexer, dict);
                 break;
             default:
-                throw InputError(token.where, "expected a key, found " + describeToken(token),
+                throw InputError(token.where,
+                                 "expected a key, found " + describe(token, token.where.line),
                                  {"An entry is 'key value;' or 'name { ... }'."});
             }
         }
@@ -192,10 +237,13 @@ private:
             {
                 // A value never continues on a new line outside parentheses, so a token on the
                 // next line means the ';' was forgotten.
+                const std::string name = entryName(key.text, key.where.line, last.endLine);
                 throw InputError(lexer.at(last.endLine, last.endColumn),
-                                 "missing ';' after the value of '" + key.text + "'",
+                                 name.empty() ? "missing ';' after this value"
+                                              : "missing ';' after the value of " +
+                                                    name.substr(0, name.size() - 1),
                                  {"Every 'key value' entry ends with ';' (found " +
-                                  describeToken(token) + " next)."});
+                                  describe(token, last.endLine) + " next)."});
             }
             if (token.kind == Token::Kind::Variable && items.empty())
             {
@@ -221,7 +269,9 @@ private:
         }
         if (items.empty())
         {
-            throw InputError(key.where, "the entry '" + key.text + "' has no value",
+            throw InputError(key.where,
+                             "the entry " + entryName(key.text, key.where.line, key.where.line) +
+                                 "has no value",
                              {"Write 'key value;' (or 'key { ... }' for a dictionary)."});
         }
         dict.add(Entry(key.text, key.where, std::move(items)));
@@ -248,7 +298,7 @@ private:
         {
             if (!scope)
             {
-                throw InputError(token.where, "'$" + token.text + "' cannot be used here",
+                throw InputError(token.where, "'$" + shownName(token) + "' cannot be used here",
                                  {"Variables are only available inside dictionary files."});
             }
             appendCopy(token, resolve(token, *scope), items);
@@ -264,9 +314,10 @@ private:
                 if (inner.kind == Token::Kind::End || inner.kind == Token::Kind::Semicolon ||
                     inner.kind == Token::Kind::OpenBrace || inner.kind == Token::Kind::CloseBrace)
                 {
-                    throw InputError(
-                        token.where, "unterminated '(': the list opened here has no ')'",
-                        {"Found " + describeToken(inner) + " before the closing ')'."});
+                    throw InputError(token.where,
+                                     "unterminated '(': the list opened here has no ')'",
+                                     {"Found " + describe(inner, token.where.line) +
+                                      " before the closing ')'."});
                 }
                 appendItem(lexer, content, scope);
             }
@@ -281,7 +332,8 @@ private:
             break;
         }
         default:
-            throw InputError(token.where, "unexpected " + describeToken(token) + " in a value",
+            throw InputError(token.where,
+                             "unexpected " + describe(token, token.where.line) + " in a value",
                              {"A value is made of words, numbers, \"strings\" and (lists)."});
         }
         if (last)
@@ -297,12 +349,15 @@ private:
         {
             std::vector<std::string> notes{"A variable copies an entry defined earlier in this "
                                            "dictionary or an enclosing one."};
-            const std::string hint = didYouMean(variable.text, scope.visibleKeys());
+            // The suggestion would quote another entry's key: not from an included file.
+            const std::string hint =
+                confined_ ? std::string() : didYouMean(variable.text, scope.visibleKeys());
             if (!hint.empty())
             {
                 notes.push_back(hint);
             }
-            throw InputError(variable.where, "undefined variable '$" + variable.text + "'", notes);
+            throw InputError(variable.where, "undefined variable '$" + shownName(variable) + "'",
+                             notes);
         }
         entry->markReferenced();
         return *entry;
@@ -313,10 +368,10 @@ private:
         if (source.isDict())
         {
             throw InputError(variable.where,
-                             "'$" + variable.text +
+                             "'$" + shownName(variable) +
                                  "' is a dictionary and cannot be part of a value",
-                             {"Copy a dictionary with 'key $" + variable.text +
-                              ";' or merge it with '$" + variable.text + ";'."});
+                             {"Copy a dictionary with 'key $" + shownName(variable) +
+                              ";' or merge it with '$" + shownName(variable) + ";'."});
         }
         countCopy(variable, itemCount(source.items()));
         items.insert(items.end(), source.items().begin(), source.items().end());
@@ -330,14 +385,14 @@ private:
         if (!source.isDict())
         {
             throw InputError(variable.where,
-                             "'$" + variable.text + ";' merges a dictionary, but '" +
-                                 variable.text + "' is a value",
-                             {"Use 'key $" + variable.text + ";' to copy a value."});
+                             "'$" + shownName(variable) + ";' merges a dictionary, but '" +
+                                 shownName(variable) + "' is a value",
+                             {"Use 'key $" + shownName(variable) + ";' to copy a value."});
         }
         if (lexer.peek().kind != Token::Kind::Semicolon)
         {
             throw InputError(lexer.at(variable.endLine, variable.endColumn),
-                             "missing ';' after '$" + variable.text + "'");
+                             "missing ';' after '$" + shownName(variable) + "'");
         }
         lexer.take();
         countCopy(variable, itemCount(source.dict()));
@@ -355,14 +410,16 @@ private:
         const Token directive = lexer.take();
         if (directive.text != "#include")
         {
-            throw InputError(directive.where, "unknown directive '" + directive.text + "'",
+            throw InputError(directive.where,
+                             "unknown directive " + describe(directive, directive.where.line),
                              {"The only directive is #include \"file\"."});
         }
         const Token file = lexer.take();
         if (file.kind != Token::Kind::String)
         {
             throw InputError(file.where,
-                             "#include needs a quoted file name, found " + describeToken(file),
+                             "#include needs a quoted file name, found " +
+                                 describe(file, file.where.line),
                              {"Write #include \"fileName\" (relative to this file)."});
         }
         const std::filesystem::path here = path_.parent_path();
@@ -404,13 +461,14 @@ private:
         stack.push_back(canonical);
         auto names = includeNames_;
         names.push_back(displayName);
-        Parser parser(target, stack, names);
+        Parser parser(target, stack, names, true);
         parser.parseBody(inner, dict, nullptr);
     }
 
     std::filesystem::path path_;
     std::vector<std::filesystem::path> includeStack_;
     std::vector<std::string> includeNames_; // display names of the same files
+    bool confined_;                         // an included file: see the constructor
 };
 
 } // namespace

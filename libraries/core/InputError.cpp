@@ -22,25 +22,104 @@ std::string build(const SourceLocation& where, const std::string& message,
            formatDiagnostic(where, message, notes);
 }
 
-// A binary file must not cut the message short (what() is a C string) or garble the terminal.
+// Length of the valid UTF-8 sequence starting at text[i] (1 to 4), or 0 when the bytes there
+// are not one (a stray continuation byte, an overlong form, a surrogate, a cut sequence).
+std::size_t utf8Length(const std::string& text, std::size_t i)
+{
+    const auto byte = [&](std::size_t k)
+    { return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u; };
+    const unsigned lead = byte(i);
+    std::size_t length = 0;
+    unsigned low = 0x80;
+    unsigned high = 0xbf; // the allowed range of the second byte
+    if (lead < 0x80)
+    {
+        return 1;
+    }
+    if (lead >= 0xc2 && lead <= 0xdf)
+    {
+        length = 2;
+    }
+    else if (lead >= 0xe0 && lead <= 0xef)
+    {
+        length = 3;
+        low = lead == 0xe0 ? 0xa0 : 0x80;
+        high = lead == 0xed ? 0x9f : 0xbf;
+    }
+    else if (lead >= 0xf0 && lead <= 0xf4)
+    {
+        length = 4;
+        low = lead == 0xf0 ? 0x90 : 0x80;
+        high = lead == 0xf4 ? 0x8f : 0xbf;
+    }
+    else
+    {
+        return 0;
+    }
+    for (std::size_t k = 1; k < length; ++k)
+    {
+        const unsigned next = byte(i + k);
+        if (next < (k == 1 ? low : 0x80) || next > (k == 1 ? high : 0xbf))
+        {
+            return 0;
+        }
+    }
+    return length;
+}
+
+// How the text at byte i is shown: one character of `length` bytes, or one byte escaped
+// (control bytes, C1 controls, bytes that are not UTF-8 text).
+struct Shown
+{
+    std::size_t length;
+    bool escaped;
+};
+
+Shown shownAt(const std::string& text, std::size_t i)
+{
+    const auto byte = static_cast<unsigned char>(text[i]);
+    const std::size_t length = utf8Length(text, i);
+    const bool control =
+        (byte < 0x20 && byte != '\n' && byte != '\t') || byte == 0x7f ||
+        (length == 2 && byte == 0xc2 && static_cast<unsigned char>(text[i + 1]) < 0xa0);
+    return length == 0 || control ? Shown{1, true} : Shown{length, false};
+}
+
+// A binary file must not cut the message short (what() is a C string) or garble the terminal:
+// control bytes and bytes that are not UTF-8 text are shown escaped, \x00 or \xff.
 std::string printable(const std::string& text)
 {
     std::string result;
-    for (const char c : text)
+    for (std::size_t i = 0; i < text.size();)
     {
-        const auto byte = static_cast<unsigned char>(c);
-        if (byte < 0x20 && c != '\n' && c != '\t')
+        const Shown shown = shownAt(text, i);
+        if (shown.escaped)
         {
             char escaped[8];
-            std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+            std::snprintf(escaped, sizeof escaped, "\\x%02x", static_cast<unsigned char>(text[i]));
             result += escaped;
         }
         else
         {
-            result += c;
+            result.append(text, i, shown.length);
         }
+        i += shown.length;
     }
     return result;
+}
+
+// The blanks that bring the caret under byte `end` of `line` shown from byte `first`: tabs
+// keep their width, an escaped byte takes four columns, a UTF-8 character one.
+std::string caretPadding(const std::string& line, std::size_t first, std::size_t end)
+{
+    std::string pad;
+    for (std::size_t i = first; i < end && i < line.size();)
+    {
+        const Shown shown = shownAt(line, i);
+        pad += shown.escaped ? std::string(4, ' ') : line[i] == '\t' ? "\t" : " ";
+        i += shown.length;
+    }
+    return pad;
 }
 
 // A message that quotes user text (a key of megabytes, say) keeps its start and end.
@@ -87,12 +166,8 @@ std::string formatDiagnostic(const SourceLocation& where, const std::string& mes
                 }
             }
             text += "    " + lead + shown + '\n';
-            // Tabs before the caret keep their width so the caret lines up under the text.
-            std::string pad(lead.size(), ' ');
-            for (std::size_t i = first; i < column && i < line.size(); ++i)
-            {
-                pad += line[i] == '\t' ? '\t' : ' ';
-            }
+            const std::string pad =
+                std::string(lead.size(), ' ') + caretPadding(line, first, column);
             const auto length = static_cast<std::size_t>(std::max(1, where.length));
             const std::size_t room = first + window > column ? first + window - column : 1;
             text += "    " + pad + '^' + std::string(std::min(length, std::max<std::size_t>(room, 1)) - 1, '~') +

@@ -1,9 +1,11 @@
 #include "solver/ParticleFile.hpp"
 
+#include "core/Format.hpp"
 #include "core/InputError.hpp"
 #include "initialConditions/generators/Generator.hpp"
 #include "io/VtuFile.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sph
@@ -28,6 +30,52 @@ void writeParticleFile(const std::filesystem::path& file, const InitialParticles
     writeVtu(file, data);
 }
 
+namespace
+{
+
+// A position the neighbour search's grid can hold: the particles span at most this many
+// spacings in each direction (a 1e308 coordinate would overflow the grid's cell count).
+constexpr double maxSpanInSpacings = 1.0e6;
+
+// Where the particles overreach the grid: "" when they lie within maxSpanInSpacings of their
+// median in every direction, otherwise the particle farthest out and by how much.
+std::string spanProblem(const InitialParticles& particles)
+{
+    const std::size_t n = particles.size();
+    for (int d = 0; d < particles.dimension && n > 0; ++d)
+    {
+        const auto coordinate = [&](std::size_t a)
+        { return particles.X[3 * a + static_cast<std::size_t>(d)]; };
+        std::vector<double> sorted(n);
+        for (std::size_t a = 0; a < n; ++a)
+        {
+            sorted[a] = coordinate(a);
+        }
+        const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(n / 2);
+        std::nth_element(sorted.begin(), middle, sorted.end());
+        std::size_t farthest = 0;
+        for (std::size_t a = 1; a < n; ++a)
+        {
+            if (std::abs(coordinate(a) - *middle) > std::abs(coordinate(farthest) - *middle))
+            {
+                farthest = a;
+            }
+        }
+        const double reach = maxSpanInSpacings * particles.spacing;
+        if (!(std::abs(coordinate(farthest) - *middle) <= reach))
+        {
+            const std::string axis(1, "xyz"[d]);
+            return "particle " + std::to_string(farthest) + " has " + axis + " = " +
+                   formatNumber(coordinate(farthest)) + ", but the particles must lie within " +
+                   formatNumber(maxSpanInSpacings) + " spacings (" + formatNumber(reach) +
+                   " m) of their middle, " + axis + " = " + formatNumber(*middle);
+        }
+    }
+    return {};
+}
+
+} // namespace
+
 InitialParticles readParticleFile(const std::filesystem::path& file)
 {
     if (!std::filesystem::exists(file))
@@ -36,31 +84,41 @@ InitialParticles readParticleFile(const std::filesystem::path& file)
                          {"Run sphParticles first: it builds them from system/particlesDict."});
     }
     const VtuData data = readVtu(file);
-    const auto need = [&](const std::map<std::string, VtuArray>& arrays, const std::string& name) {
-        const auto found = arrays.find(name);
-        if (found == arrays.end())
-        {
-            throw InputError("'" + file.string() + "' has no array '" + name + "'",
-                             {"It was not written by sphParticles; run sphParticles again."});
-        }
-        return found->second;
-    };
-    InitialParticles particles;
-    particles.X = data.points;
-    particles.V = need(data.pointData, "volume").values;
-    for (double id : need(data.pointData, "bodyId").values)
+    const VtuChecks checks(data, file.string(),
+                           "The file is damaged or was not written by sphParticles; run "
+                           "sphParticles again.");
+    if (data.pointCount() == 0)
     {
-        particles.body.push_back(static_cast<int>(id));
+        checks.fail("it holds no particles");
     }
-    particles.spacing = need(data.fieldData, "spacing").values.at(0);
-    particles.dimension = static_cast<int>(need(data.fieldData, "dimension").values.at(0));
+    InitialParticles particles;
     const auto names = data.stringFields.find("bodyNames");
-    if (names == data.stringFields.end())
+    if (names == data.stringFields.end() || names->second.empty())
     {
-        throw InputError("'" + file.string() + "' has no field 'bodyNames'",
-                         {"Run sphParticles again."});
+        checks.fail("it has no field data 'bodyNames' naming the bodies");
     }
     particles.bodyNames = names->second;
+    const VtuArray& dimension = checks.fieldArray("dimension", 1);
+    checks.wholeNumbers("dimension", dimension, 1, 3, "the space dimension");
+    particles.dimension = static_cast<int>(dimension.values[0]);
+    const VtuArray& spacing = checks.fieldArray("spacing", 1);
+    checks.positive("spacing", spacing);
+    particles.spacing = spacing.values[0];
+    checks.finitePoints();
+    particles.X = data.points;
+    const VtuArray& volume = checks.pointArray("volume", 1);
+    checks.positive("volume", volume);
+    particles.V = volume.values;
+    const VtuArray& bodyId = checks.pointArray("bodyId", 1);
+    const std::size_t bodies = particles.bodyNames.size();
+    checks.wholeNumbers("bodyId", bodyId, 0, static_cast<double>(bodies - 1),
+                        "a body index; field data 'bodyNames' names " + std::to_string(bodies) +
+                            (bodies == 1 ? " body" : " bodies"));
+    particles.body.assign(bodyId.values.begin(), bodyId.values.end());
+    if (const std::string problem = spanProblem(particles); !problem.empty())
+    {
+        checks.fail(problem);
+    }
     return particles;
 }
 
@@ -126,6 +184,11 @@ InitialParticles generate(const Dictionary& dict, const std::filesystem::path& c
     {
         throw InputError(dict.location(), "system/particlesDict defines no body",
                          {"Add one, e.g. bar { type line; start 0; end 0.1333; n 40; }"});
+    }
+    if (const std::string problem = spanProblem(particles); !problem.empty())
+    {
+        throw InputError(dict.location(), problem,
+                         {"Check the bodies' positions (and the points of any imported .vtu)."});
     }
     return particles;
 }

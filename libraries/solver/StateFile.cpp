@@ -2,7 +2,10 @@
 
 #include "core/InputError.hpp"
 
+#include <algorithm>
 #include <array>
+#include <limits>
+#include <variant>
 
 namespace sph
 {
@@ -66,11 +69,46 @@ VtuArray arrayOf(const typename ParticleFields<D>::Field& field, std::size_t n)
     return array;
 }
 
+const char* const restartHint = "It was written by an older or different program, or for another "
+                                "case, or damaged; start afresh with startFrom startTime.";
+
 InputError restartError(const std::string& file, const std::string& what)
 {
-    return InputError("cannot restart from '" + file + "': " + what,
-                      {"It was written by an older or different program, or for another case; "
-                       "start afresh with startFrom startTime."});
+    return InputError("cannot restart from '" + file + "': " + what, {restartHint});
+}
+
+// The restart arrays of a run scalar: whole numbers for a counter (a step of 1e300 or NaN does
+// not fit a long), any finite number otherwise.
+void checkScalar(const VtuChecks& checks, const RunScalars::Scalar& scalar, const VtuArray& array)
+{
+    if (std::holds_alternative<long*>(scalar.value))
+    {
+        checks.wholeNumbers(restartPrefix + scalar.name, array, -9.0e18, 9.0e18, "a counter");
+    }
+}
+
+// The time and every other restart number (time-step state, function-object state) are used
+// as they are: one finite value each; a run array may hold any number of finite values.
+void checkRestartFieldData(const VtuChecks& checks, const VtuData& data, const RunScalars& scalars)
+{
+    checks.fieldArray("TimeValue", 1);
+    for (const auto& [name, array] : data.fieldData)
+    {
+        if (name.rfind(restartPrefix, 0) != 0)
+        {
+            continue;
+        }
+        const bool runArray =
+            std::any_of(scalars.arrays().begin(), scalars.arrays().end(),
+                        [&](const RunScalars::Array& a) { return restartPrefix + a.name == name; });
+        checks.fieldArray(name, runArray ? 0 : 1);
+    }
+    // The solver's step counter (written with the output) becomes a long.
+    const auto step = data.fieldData.find(std::string(restartPrefix) + "step");
+    if (step != data.fieldData.end())
+    {
+        checks.wholeNumbers(step->first, step->second, 0, 9.0e18, "the step count");
+    }
 }
 
 } // namespace
@@ -133,6 +171,8 @@ void readState(const VtuData& data, ParticleFields<D>& fields, const RunScalars&
         throw restartError(file, "it holds " + std::to_string(data.pointCount()) +
                                      " particles, the case " + std::to_string(n));
     }
+    const VtuChecks checks(data, "cannot restart from '" + file + "'", restartHint);
+    checkRestartFieldData(checks, data, scalars);
     for (auto& field : fields.all())
     {
         const FieldSpec& spec = field.spec;
@@ -145,6 +185,7 @@ void readState(const VtuData& data, ParticleFields<D>& fields, const RunScalars&
         std::array<double, 27> value{};
         if (spec.name() == positionField)
         {
+            checks.finitePoints();
             for (std::size_t a = 0; a < n; ++a)
             {
                 std::copy(&data.points[3 * a], &data.points[3 * a] + D, value.begin());
@@ -152,20 +193,14 @@ void readState(const VtuData& data, ParticleFields<D>& fields, const RunScalars&
             }
             continue;
         }
-        const auto found = data.pointData.find(spec.fileName());
-        if (found == data.pointData.end())
-        {
-            throw restartError(file, "it has no array '" + spec.fileName() + "'");
-        }
-        const VtuArray& array = found->second;
         const bool display = spec.isDisplay();
         const int stored = display ? displayComponents(spec.kind()) : native;
-        if (array.components != stored ||
-            array.values.size() != n * static_cast<std::size_t>(stored))
+        const VtuArray& array = checks.pointArray(spec.fileName(), stored);
+        if (spec.kind() == FieldKind::integer)
         {
-            throw restartError(file, "its array '" + spec.fileName() + "' has " +
-                                         std::to_string(array.components) + " components, not " +
-                                         std::to_string(stored));
+            // Integer fields are flags and ids held in an int (or narrower).
+            checks.wholeNumbers(spec.fileName(), array, std::numeric_limits<int>::min(),
+                                std::numeric_limits<int>::max(), "an integer field");
         }
         for (std::size_t a = 0; a < n; ++a)
         {
@@ -179,21 +214,19 @@ void readState(const VtuData& data, ParticleFields<D>& fields, const RunScalars&
     }
     for (const auto& scalar : scalars.all())
     {
-        const auto found = data.fieldData.find(restartPrefix + scalar.name);
-        if (found == data.fieldData.end() || found->second.values.size() != 1)
-        {
-            throw restartError(file, "it has no number '" + std::string(restartPrefix) + scalar.name + "'");
-        }
-        scalar.set(found->second.values[0]);
+        const VtuArray& array = checks.fieldArray(restartPrefix + scalar.name, 1);
+        checkScalar(checks, scalar, array);
+        scalar.set(array.values[0]);
     }
     for (const auto& array : scalars.arrays())
     {
-        const auto found = data.fieldData.find(restartPrefix + array.name);
-        if (found == data.fieldData.end() || found->second.components != 1)
+        const VtuArray& stored = checks.fieldArray(restartPrefix + array.name, 0);
+        if (stored.components != 1)
         {
-            throw restartError(file, "it has no array '" + std::string(restartPrefix) + array.name + "'");
+            checks.fail("its field data '" + std::string(restartPrefix) + array.name + "' has " +
+                        std::to_string(stored.components) + " components, not 1");
         }
-        *array.values = found->second.values;
+        *array.values = stored.values;
     }
 }
 

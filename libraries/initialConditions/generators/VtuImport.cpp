@@ -46,19 +46,22 @@ private:
     GeneratedBody<D> read(const Params& p) const
     {
         const VtuData data = readVtu(file_);
+        const VtuChecks checks(data, file_.string(),
+                               "The 'vtu' generator of system/particlesDict imports it: every "
+                               "coordinate and volume must be finite, every volume > 0.");
+        checks.finitePoints();
         GeneratedBody<D> body;
         body.spacing = spacing_;
         const VtuArray* volumes = nullptr;
         if (!volumeArray_.empty())
         {
-            const auto found = data.pointData.find(volumeArray_);
-            if (found == data.pointData.end() || found->second.components != 1)
+            if (data.pointData.count(volumeArray_) == 0)
             {
-                p.fail("volumeArray", "vtu: '" + file_.string() +
-                                          "' has no one-component point array '" +
-                                          volumeArray_ + "'");
+                p.fail("volumeArray",
+                       "vtu: '" + file_.string() + "' has no point array '" + volumeArray_ + "'");
             }
-            volumes = &found->second;
+            volumes = &checks.pointArray(volumeArray_, 1);
+            checks.positive(volumeArray_, *volumes);
         }
         for (std::size_t i = 0; i < data.pointCount(); ++i)
         {

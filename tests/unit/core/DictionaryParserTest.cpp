@@ -275,3 +275,73 @@ TEST_CASE("an error in a huge line or about a huge key is not echoed whole", "[p
         CHECK(std::string(error.what()).size() < 1500);
     }
 }
+
+namespace
+{
+
+// Parses `dir`/main, which includes `included`; returns the formatted error.
+std::string includeError(const sph::test::TempDir& dir, const std::string& included)
+{
+    dir.write("main", "x 1;\n#include \"" + included + "\"\n");
+    try
+    {
+        DictionaryParser::parseFile(dir.path() / "main", "main");
+    }
+    catch (const InputError& error)
+    {
+        return error.what();
+    }
+    FAIL("no error");
+    return {};
+}
+
+} // namespace
+
+TEST_CASE("an included file that is not a dictionary is quoted by its offending line only",
+          "[parser][errors]")
+{
+    // #include may name any readable file (issue 12 item 2): the message must not echo the
+    // key on the line above nor the word on the line below, only the line it points at.
+    sph::test::TempDir dir;
+    std::string notes = "password-notes\n"
+                        "the offending line holds the value of the key above\n"
+                        "hunter2 is on the third line\n";
+    for (int i = 4; i <= 40; ++i)
+    {
+        notes += "line " + std::to_string(i) + " of the notes\n";
+    }
+    dir.write("notes.txt", notes);
+    const std::string text = includeError(dir, "notes.txt");
+    CHECK_THAT(text, Catch::Contains("notes.txt:2:52: missing ';' after this value"));
+    CHECK_THAT(text, Catch::Contains("    the offending line holds the value of the key above\n"));
+    CHECK_THAT(text, Catch::Contains("(found a word on line 3 next)"));
+    CHECK_THAT(text, !Catch::Contains("password-notes"));
+    CHECK_THAT(text, !Catch::Contains("hunter2"));
+    CHECK_THAT(text, !Catch::Contains("line 4"));
+
+    // One long line (as /proc/self/environ is): nothing beyond the 120-character window.
+    dir.write("environ", "HOME=/root" + std::string(1, '\0') + "SECRET=" + std::string(3000, 's') +
+                             " and more\n");
+    const std::string environ = includeError(dir, "environ");
+    CHECK_THAT(environ, Catch::Contains("missing ';' after this value"));
+    CHECK(environ.size() < 600);
+    CHECK_THAT(environ, !Catch::Contains("HOME=/root"));
+}
+
+TEST_CASE("binary content is shown escaped, valid UTF-8 as it is", "[parser][errors]")
+{
+    sph::test::TempDir dir;
+    dir.write("blob", std::string("\x7f"
+                                  "ELF\x02\x01\x01",
+                                  7) +
+                          std::string(3, '\0') +
+                          "\xff\xfe\x80 \xc3"
+                          "A \xce\xbb }\n");
+    const std::string text = includeError(dir, "blob");
+    CHECK_THAT(text, Catch::Contains("\\x7fELF\\x02\\x01\\x01\\x00\\x00\\x00\\xff\\xfe\\x80"));
+    CHECK_THAT(text, Catch::Contains("missing ';' after the value of '\\x7fELF"));
+    CHECK_THAT(text, Catch::Contains("\\xc3A"));   // a cut sequence: the lead byte escaped
+    CHECK_THAT(text, Catch::Contains("\xce\xbb")); // λ stays readable
+    CHECK(text.find('\xff') == std::string::npos);
+    CHECK(text.find('\x80') == std::string::npos);
+}
