@@ -59,35 +59,40 @@ public:
         const bool hadLayout = offsets_.size() == n + 1 &&
                                static_cast<std::size_t>(offsets_[n]) == neighbours_.size() &&
                                neighbours_.size() * stride_ == states_.size();
-        std::vector<double> states(list.pairCount() * stride_, 0.0);
-#pragma omp parallel for schedule(static) if (useThreads(n))
-        for (std::size_t a = 0; a < n; ++a)
+        // Into a buffer kept between moves (no allocation, no page faults once grown: the
+        // reference moves every step). Slots of bodies without history are never read.
+        remapped_.resize(list.pairCount() * stride_);
+#pragma omp parallel if (useThreads(n))
         {
-            const Material<D>* material = materials[static_cast<std::size_t>(body[a])];
-            if (material->historyComponents() == 0)
-            {
-                continue;
-            }
             std::vector<double> owner(stride_, 0.0);
-            material->packHistory(a, owner.data());
-            std::size_t old = hadLayout ? static_cast<std::size_t>(offsets_[a]) : 0;
-            const std::size_t oldEnd = hadLayout ? static_cast<std::size_t>(offsets_[a + 1]) : 0;
-            for (std::size_t k = list.begin(a); k < list.end(a); ++k)
+#pragma omp for schedule(static)
+            for (std::size_t a = 0; a < n; ++a)
             {
-                // Both lists: a itself first, then its neighbours in increasing index order.
-                const double b = list.indices[k];
-                const bool self = k == list.begin(a);
-                while (!self && old < oldEnd && (old == offsets_[a] || neighbours_[old] < b))
+                const Material<D>* material = materials[static_cast<std::size_t>(body[a])];
+                if (material->historyComponents() == 0)
                 {
-                    ++old;
+                    continue;
                 }
-                const bool kept = old < oldEnd && neighbours_[old] == b;
-                const double* from = kept ? &states_[old * stride_] : owner.data();
-                std::copy(from, from + stride_, &states[k * stride_]);
+                material->packHistory(a, owner.data());
+                std::size_t old = hadLayout ? static_cast<std::size_t>(offsets_[a]) : 0;
+                const std::size_t oldEnd = hadLayout ? static_cast<std::size_t>(offsets_[a + 1]) : 0;
+                for (std::size_t k = list.begin(a); k < list.end(a); ++k)
+                {
+                    // Both lists: a itself first, then its neighbours in increasing index order.
+                    const double b = list.indices[k];
+                    const bool self = k == list.begin(a);
+                    while (!self && old < oldEnd && (old == offsets_[a] || neighbours_[old] < b))
+                    {
+                        ++old;
+                    }
+                    const bool kept = old < oldEnd && neighbours_[old] == b;
+                    const double* from = kept ? &states_[old * stride_] : owner.data();
+                    std::copy(from, from + stride_, &remapped_[k * stride_]);
+                }
             }
         }
-        states_.swap(states);
-        next_.assign(states_.size(), 0.0);
+        states_.swap(remapped_);
+        next_.resize(states_.size()); // every slot of a history body is written before a commit
         offsets_.assign(list.offsets.begin(), list.offsets.end());
         neighbours_.assign(list.indices.begin(), list.indices.end());
         current_ = true;
@@ -106,6 +111,7 @@ private:
     bool current_ = false;
     std::vector<double> states_;
     std::vector<double> next_;
+    std::vector<double> remapped_; // follow()'s buffer
     // The list the states lie along (doubles: a restart array; indices < 2^32 are exact).
     std::vector<double> offsets_;
     std::vector<double> neighbours_;
