@@ -1,4 +1,5 @@
 #include "CaseDictionaries.hpp"
+#include "TextFile.hpp"
 
 #include "DictionaryParser.hpp"
 #include "InputError.hpp"
@@ -70,7 +71,8 @@ void CaseDictionaries::read(const std::vector<std::string>& required,
     {
         const std::string relative = relativePath(name);
         const std::filesystem::path path = caseDir_ / relative;
-        if (!std::filesystem::exists(path))
+        const std::string reason = unreadableReason(path);
+        if (reason == "no such file")
         {
             if (!mustExist)
             {
@@ -82,6 +84,12 @@ void CaseDictionaries::read(const std::vector<std::string>& required,
                               "system/particlesDict and constant/bodies.",
                               "Point -case at a case folder, or copy a tutorial case to start "
                               "from (tutorials/)."});
+        }
+        if (!reason.empty())
+        {
+            throw InputError("cannot read " + relative + " in the case folder '" +
+                                 caseDir_.string() + "': " + reason,
+                             {"It must be a readable text file (a symbolic link to one is fine)."});
         }
         files_[name] = DictionaryParser::parseFile(path, relative);
         order_.push_back(name);

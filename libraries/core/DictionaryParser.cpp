@@ -444,9 +444,9 @@ private:
                                  {"Include chain: " + chain + target});
             }
         }
-        if (!std::filesystem::is_regular_file(target))
+        if (const std::string reason = unreadableReason(target); !reason.empty())
         {
-            throw InputError(file.where, "cannot open included file '" + file.text + "'",
+            throw InputError(file.where, "cannot open included file '" + file.text + "': " + reason,
                              {"Looked for " + target.string() +
                               " (an #include path is relative to the including file)."});
         }

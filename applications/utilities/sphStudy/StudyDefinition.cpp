@@ -175,8 +175,8 @@ void checkPlainName(const Entry& entry, const std::string& what)
     if (!ok)
     {
         throw InputError(entry.keyLocation(),
-                         what + " '" + name + "' is not a plain name: it names a folder and a "
-                                              "plot line",
+                         what + " '" + name + "' is not a plain name: it is used in folder, file "
+                                              "and plot names",
                          {"Use letters, digits and _ . + - (at most 64, starting with a letter, "
                           "a digit or _), e.g. dx0.5mm or ULgradF."});
     }
