@@ -266,10 +266,13 @@ bool CommandLine::parse(int argc, const char* const* argv)
                               "Run '" + program_ + " -help' for the options."});
         }
     }
-    if (!std::filesystem::is_directory(caseDir_) && !listTypes_)
+    std::error_code ec;
+    if (!std::filesystem::is_directory(caseDir_, ec) && !listTypes_)
     {
+        const bool exists = std::filesystem::exists(caseDir_, ec);
         throw InputError(locateValue("case"),
-                         "the case folder '" + caseDir_.string() + "' does not exist",
+                         "the case folder '" + caseDir_.string() +
+                             (exists ? "' is a file, not a folder" : "' does not exist"),
                          {"Give an existing folder with -case DIR (a case holds system/ and "
                           "constant/)."});
     }

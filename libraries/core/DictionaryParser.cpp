@@ -42,9 +42,17 @@ std::size_t itemCount(const Dictionary& dict)
     return count;
 }
 
+// The text of a dictionary file without a UTF-8 byte-order mark (some Windows editors write
+// one; it would otherwise be part of the first key). Columns then count from after it.
 std::string readFile(const std::filesystem::path& path)
 {
-    return readTextFile(path, "dictionary file", {"Check that the file exists and is readable."});
+    std::string text =
+        readTextFile(path, "dictionary file", {"Check that the file exists and is readable."});
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0)
+    {
+        text.erase(0, 3);
+    }
+    return text;
 }
 
 class Parser

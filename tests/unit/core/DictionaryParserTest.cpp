@@ -131,6 +131,19 @@ TEST_CASE("#include is relative to the including file", "[parser]")
     CHECK(dict->find("deep")->keyLocation().fileName() == "constant/more/deeper");
 }
 
+// A UTF-8 byte-order mark (some Windows editors write one) is not part of the first key, and
+// columns count from after it (issue 12 item 9).
+TEST_CASE("a file starting with a UTF-8 byte-order mark reads as without it", "[parser]")
+{
+    sph::test::TempDir dir;
+    dir.write("system/controlDict", "\xEF\xBB\xBF" "endTime 7;\n");
+    const auto dict = DictionaryParser::parseFile(dir.path() / "system/controlDict",
+                                                  "system/controlDict");
+    REQUIRE(dict->find("endTime"));
+    CHECK(dict->find("endTime")->items()[0].number() == 7);
+    CHECK(dict->find("endTime")->keyLocation().column == 1);
+}
+
 TEST_CASE("#include errors: missing file, cycle, bad argument", "[parser][errors]")
 {
     sph::test::TempDir dir;
