@@ -1,9 +1,11 @@
 #include "CaseDictionaries.hpp"
-#include "TextFile.hpp"
 
 #include "DictionaryParser.hpp"
 #include "InputError.hpp"
 #include "Suggest.hpp"
+#include "TextFile.hpp"
+
+#include <algorithm>
 
 namespace sph
 {
@@ -91,7 +93,15 @@ void CaseDictionaries::read(const std::vector<std::string>& required,
                                  caseDir_.string() + "': " + reason,
                              {"It must be a readable text file (a symbolic link to one is fine)."});
         }
-        files_[name] = DictionaryParser::parseFile(path, relative);
+        auto dict = DictionaryParser::parseFile(path, relative);
+        // An OpenFOAM header `FoamFile { version 2.0; format ascii; class dictionary; ... }` is
+        // accepted and ignored, so that files written with OpenFOAM habits and tools load.
+        auto& entries = dict->entries();
+        entries.erase(std::remove_if(entries.begin(), entries.end(),
+                                     [](const Entry& entry)
+                                     { return entry.key() == "FoamFile" && entry.isDict(); }),
+                      entries.end());
+        files_[name] = std::move(dict);
         order_.push_back(name);
     };
     for (const auto& name : required)

@@ -115,3 +115,21 @@ TEST_CASE("a missing case file says what a case holds", "[case][errors]")
         CHECK_THAT(error.what(), Catch::Contains("copy a tutorial case"));
     }
 }
+
+// An OpenFOAM `FoamFile { }` header is accepted and ignored (issue 12 item 14): the bodies file
+// keeps one body, not a second one named FoamFile.
+TEST_CASE("an OpenFOAM FoamFile header is ignored", "[case]")
+{
+    sph::test::TempDir dir;
+    writeCase(dir);
+    const std::string header =
+        "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class dictionary;\n}\n";
+    dir.write("constant/bodies",
+              header + "bar { material { type linearElastic; E 3e4; } }\n");
+    dir.write("system/controlDict", header + "endTime 5e-3;\ncourant 0.01;\n");
+    CaseDictionaries dicts(dir.path());
+    dicts.read({"controlDict", "sphSchemes", "bodies"});
+    CHECK(dicts.get("bodies").keys() == std::vector<std::string>{"bar"});
+    CHECK(dicts.get("controlDict").find("FoamFile") == nullptr);
+    CHECK(dicts.get("controlDict").find("endTime")->items()[0].number() == 5e-3);
+}
