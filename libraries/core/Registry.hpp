@@ -243,6 +243,19 @@ std::unique_ptr<Base> selectModel(const Dictionary& dict, const typename Base::A
     context.dimension = dimension;
     context.label = name;
     context.bodies = selection.bodies;
+    context.otherModelsWith = [family, name](const std::string& key)
+    {
+        std::vector<std::string> owners;
+        for (const std::string& other : RegistryStore::instance().names(family, Base::dimension))
+        {
+            const ModelRecord* model = Registry<Base>::find(other);
+            if (other != name && model && model->schema().find(key))
+            {
+                owners.push_back(other);
+            }
+        }
+        return owners;
+    };
     return Registry<Base>::create(name, schema.validate(dict, context), args);
 }
 

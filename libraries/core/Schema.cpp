@@ -107,6 +107,15 @@ Params Schema::validate(const Dictionary& dict, const ValidationContext& context
         {
             notes.push_back(hint);
         }
+        if (context.otherModelsWith)
+        {
+            const std::vector<std::string> owners = context.otherModelsWith(entry.key());
+            if (!owners.empty())
+            {
+                notes.push_back("'" + entry.key() + "' is a key of " + joinSorted(owners) +
+                                ", not of " + label + ": is the type right?");
+            }
+        }
         throw InputError(entry.keyLocation(),
                          "unknown key '" + entry.key() + "' in '" + owner + "'", notes);
     }

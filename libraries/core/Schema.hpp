@@ -13,6 +13,7 @@
 
 #include "Dictionary.hpp"
 
+#include <functional>
 #include <limits>
 #include <optional>
 #include <set>
@@ -122,6 +123,9 @@ struct ValidationContext
     std::string label;    // who reads the dictionary: "neoHookean", "controlDict", ...
     std::set<std::string> ignoredKeys{"type"}; // consumed by the caller (e.g. the selector)
     std::vector<std::string> bodies; // the case's bodies, in index order; empty = not known
+    // The other models of the family that accept a key (for "unknown key": a key of another
+    // model usually means the wrong type or a key put in the wrong dictionary).
+    std::function<std::vector<std::string>(const std::string& key)> otherModelsWith;
 };
 
 // Whether a dictionary's `type` entry selects the model (and is skipped by validation, the
