@@ -357,25 +357,24 @@ double GradF<D>::energy(const ForceInput<D>& in)
     const NeighbourList& list = ref.neighbours;
     samples_.follow(list, in.body, in.materials);
     double total = 0.0;
+    Scratch scratch; // one for all particles; kinematics() fills x^r_ba and Ŵ_ab
+    scratch.resize(maxNeighbours_);
     for (std::size_t b = 0; b < in.bodies.size(); ++b)
     {
         const Material<D>& material = *in.materials[b];
         for (std::size_t a = in.bodies[b].begin; a < in.bodies[b].end; ++a)
         {
-            const Kinematics kin = kinematics(a, in.x, ref);
+            const Kinematics kin = kinematics(a, in.x, ref, false, scratch);
             double sum = 0.0;
             const std::size_t count = list.count(a);
-            Scratch scratch;
-            scratch.resize(count);
             for (std::size_t j = 0; j < count; ++j)
             {
-                const Vec<D> xr = ref.x[list.indices[list.begin(a) + j]] - ref.x[a];
-                scratch.F[j] = kin.F + kin.G.contract(xr);
+                scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
             }
             evaluateSamples(a, material, list, count, scratch.psi.data(), scratch, false);
             for (std::size_t j = 0; j < count; ++j)
             {
-                sum += weight(ref, a, list.begin(a) + j) * scratch.psi[j];
+                sum += scratch.w[j] * scratch.psi[j];
             }
             total += in.V0[a] * sum;
         }
