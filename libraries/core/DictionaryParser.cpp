@@ -43,14 +43,26 @@ std::size_t itemCount(const Dictionary& dict)
 }
 
 // The text of a dictionary file without a UTF-8 byte-order mark (some Windows editors write
-// one; it would otherwise be part of the first key). Columns then count from after it.
+// one; it would otherwise be part of the first key; columns then count from after it) and with
+// every line ending as '\n': Windows' "\r\n" and old Mac OS's lone '\r' too, so that line
+// numbers in messages are the ones an editor shows.
 std::string readFile(const std::filesystem::path& path)
 {
-    std::string text =
+    std::string raw =
         readTextFile(path, "dictionary file", {"Check that the file exists and is readable."});
-    if (text.rfind("\xEF\xBB\xBF", 0) == 0)
+    const std::size_t start = raw.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+    std::string text;
+    text.reserve(raw.size() - start);
+    for (std::size_t i = start; i < raw.size(); ++i)
     {
-        text.erase(0, 3);
+        if (raw[i] != '\r')
+        {
+            text += raw[i];
+        }
+        else if (i + 1 == raw.size() || raw[i + 1] != '\n')
+        {
+            text += '\n';
+        }
     }
     return text;
 }
@@ -463,7 +475,12 @@ private:
                 .lexically_normal()
                 .string();
         const std::string text = readFile(target);
-        auto source = std::make_shared<const SourceText>(displayName, text);
+        // Messages about the included file say where it was included from (and from where
+        // that file was, for nested includes).
+        std::vector<std::string> includedFrom{file.where.prefix()};
+        const std::vector<std::string>& outer = file.where.source->includedFrom();
+        includedFrom.insert(includedFrom.end(), outer.begin(), outer.end());
+        auto source = std::make_shared<const SourceText>(displayName, text, std::move(includedFrom));
         Lexer inner(source, text);
         auto stack = includeStack_;
         stack.push_back(canonical);

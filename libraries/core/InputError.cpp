@@ -174,6 +174,13 @@ std::string formatDiagnostic(const SourceLocation& where, const std::string& mes
                     '\n';
         }
     }
+    if (where.known())
+    {
+        for (const std::string& includer : where.source->includedFrom())
+        {
+            text += "    included from " + includer + '\n';
+        }
+    }
     for (const std::string& note : notes)
     {
         if (!note.empty()) // e.g. a "did you mean" that found nothing

@@ -3,8 +3,9 @@
 namespace sph
 {
 
-SourceText::SourceText(std::string displayName, const std::string& text)
-    : displayName_(std::move(displayName))
+SourceText::SourceText(std::string displayName, const std::string& text,
+                       std::vector<std::string> includedFrom)
+    : displayName_(std::move(displayName)), includedFrom_(std::move(includedFrom))
 {
     std::string current;
     for (char c : text)

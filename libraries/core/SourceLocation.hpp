@@ -14,15 +14,20 @@ namespace sph
 class SourceText
 {
 public:
-    SourceText(std::string displayName, const std::string& text);
+    // `includedFrom`: for a file read by #include, the "file:line:col" of that directive, then
+    // of the directive that included the including file, and so on outwards.
+    SourceText(std::string displayName, const std::string& text,
+               std::vector<std::string> includedFrom = {});
 
     const std::string& displayName() const { return displayName_; }
+    const std::vector<std::string>& includedFrom() const { return includedFrom_; }
     // 1-based; returns "" for a line outside the text.
     const std::string& line(int number) const;
     int lineCount() const { return static_cast<int>(lines_.size()); }
 
 private:
     std::string displayName_;
+    std::vector<std::string> includedFrom_;
     std::vector<std::string> lines_;
 };
 
