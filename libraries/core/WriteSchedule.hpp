@@ -2,11 +2,15 @@
 // When something is written during a run: the VTK output, every function object's rows, the
 // snapshots. One rule for all of them: at the first time level at or after each multiple of
 // the interval (every level when the interval is 0), with a tolerance of 1e-6 of the step for
-// the round-off in the accumulated time.
+// the round-off in the accumulated time. With controlDict's `writeControl adjustableRunTime`
+// (the default) the solver shortens the steps before each of these times (nextAfter()), so
+// that the level lands on it exactly.
 
 #include "Format.hpp"
 #include "InputError.hpp"
 #include "SourceLocation.hpp"
+
+#include <limits>
 
 namespace sph
 {
@@ -58,6 +62,25 @@ public:
                               "The time step is courant h / c, c the largest wave speed of the "
                               "materials: check E and rho if it is not what you expect."});
         }
+    }
+    // The first write time after the level at `time`: next() unless a write is due at this
+    // level, then the one written() would set. +inf when the interval is 0 (every level):
+    // such a schedule asks for no particular time (writeControl adjustableRunTime).
+    double nextAfter(double time, double deltaT) const
+    {
+        if (interval_ <= 0.0 || interval_ < deltaT)
+        {
+            // An interval below the step is reported by checkStep(); landing on it would
+            // make steps of the interval's length.
+            return std::numeric_limits<double>::infinity();
+        }
+        if (!due(time, deltaT))
+        {
+            return next_;
+        }
+        WriteSchedule after(*this);
+        after.written(time, deltaT);
+        return after.next_;
     }
     void restart() { next_ = 0.0; }
     double interval() const { return interval_; }

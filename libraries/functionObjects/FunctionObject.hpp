@@ -20,6 +20,7 @@
 #include "particles/ReferenceConfiguration.hpp"
 
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -118,6 +119,12 @@ public:
     // ...and words (e.g. a verdict), written as JSON strings.
     virtual std::map<std::string, std::string> textResults() const { return {}; }
     // Running quantities that a restart must continue (energy reference, error norms, ...).
+    // The first time after the level at `time` at which this object writes (+inf: none in
+    // particular); the solver lands a level on it under writeControl adjustableRunTime.
+    virtual double nextWriteTime(double /*time*/, double /*deltaT*/) const
+    {
+        return std::numeric_limits<double>::infinity();
+    }
     virtual void saveState(std::map<std::string, double>&) const {}
     virtual void restoreState(const std::map<std::string, double>&) {}
 

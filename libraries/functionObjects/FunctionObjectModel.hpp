@@ -31,6 +31,10 @@ public:
         }
         file_->open(startTime, restarted);
     }
+    double nextWriteTime(double time, double deltaT) const override
+    {
+        return schedule_.nextAfter(time, deltaT);
+    }
     void saveState(std::map<std::string, double>& state) const override
     {
         state["nextRow"] = schedule_.next();

@@ -1,6 +1,9 @@
 #include "solver/CaseSettings.hpp"
 
+#include "core/Format.hpp"
 #include "core/InputError.hpp"
+
+#include <cmath>
 #include "core/LibraryLoader.hpp"
 
 namespace sph
@@ -12,7 +15,15 @@ Schema ControlSettings::schema()
         .add(Key::real("endTime", "end of the simulation [s]").positive())
         .add(Key::real("courant", "Courant number alpha in dt = alpha h / c (seed eq. 17)")
                  .range(0.0, 2.0, false, true))
-        .add(Key::real("writeInterval", "time between VTK outputs [s]").positive())
+        .add(Key::real("writeInterval", "time between VTK outputs [s] (writeControl timeStep: "
+                                        "steps)")
+                 .positive())
+        .add(Key::word("writeControl",
+                       "adjustableRunTime: steps shortened to land on every output time; "
+                       "runTime: the first level at or after it; timeStep: every writeInterval "
+                       "steps")
+                 .choices({"adjustableRunTime", "runTime", "timeStep"})
+                 .defaultValue("adjustableRunTime"))
         .add(Key::word("startFrom", "startTime, or latestTime to restart from the last output")
                  .choices({"startTime", "latestTime"})
                  .defaultValue("startTime"))
@@ -43,6 +54,19 @@ ControlSettings ControlSettings::read(const CaseDictionaries& dicts)
     settings.endTime = p.real("endTime");
     settings.courant = p.real("courant");
     settings.writeInterval = p.real("writeInterval");
+    const std::string writeControl = p.word("writeControl");
+    settings.writeControl = writeControl == "runTime"    ? WriteControl::runTime
+                            : writeControl == "timeStep" ? WriteControl::timeStep
+                                                         : WriteControl::adjustableRunTime;
+    if (settings.writeControl == WriteControl::timeStep &&
+        (settings.writeInterval != std::floor(settings.writeInterval) || settings.writeInterval > 1e15))
+    {
+        p.fail("writeInterval",
+               "writeInterval " + formatNumber(settings.writeInterval) +
+                   " is not a whole number of steps (writeControl timeStep)",
+               {"With writeControl timeStep, writeInterval counts steps: e.g. writeInterval "
+                "100; for an interval in seconds use writeControl adjustableRunTime."});
+    }
     settings.startFromLatest = p.word("startFrom") == "latestTime";
     settings.timeStepUpdateInterval = p.integer("timeStepUpdateInterval");
     if (p.has("maxSteps"))

@@ -4,7 +4,11 @@
 // system/controlDict
 //   endTime                | end of the simulation [s]                                | required
 //   courant                | α in Δt = α h / c (seed eq. 17)                          | required
-//   writeInterval          | time between VTK outputs [s]                             | required
+//   writeInterval          | time between VTK outputs [s] (timeStep: steps)           | required
+//   writeControl           | adjustableRunTime: shorten the steps before each output  | adjustable-
+//                          | and function-object row time to land on it exactly;      | RunTime
+//                          | runTime: write at the first level at or after it;        |
+//                          | timeStep: every writeInterval steps (OpenFOAM's words)   |
 //   startFrom              | startTime, or latestTime to restart from the last output | startTime
 //   timeStepUpdateInterval | steps between recomputing c from the current F (0: keep | 1
 //                          | the initial Δt, as for comparisons with other codes)     |
@@ -33,11 +37,19 @@
 namespace sph
 {
 
+enum class WriteControl
+{
+    adjustableRunTime,
+    runTime,
+    timeStep
+};
+
 struct ControlSettings
 {
     double endTime = 0.0;
     double courant = 0.0;
-    double writeInterval = 0.0;
+    double writeInterval = 0.0; // [s], or steps with WriteControl::timeStep
+    WriteControl writeControl = WriteControl::adjustableRunTime;
     bool startFromLatest = false;
     long timeStepUpdateInterval = 1;
     std::optional<long> maxSteps;

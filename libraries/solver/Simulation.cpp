@@ -58,16 +58,17 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         const ForceStatus forces = computeForces(atReference, wantEnergy);
         computeViscosity();
         chooseTimeStep(step_ == firstStep && !restarted, step_ == firstStep);
-        accelerate();
-        applyViscosity();
-        applyWalls();
-        audit_.completeContactWork(particles_.m, contactDeltaV_, acceleration_);
         // The run ends at the first level at or after endTime (no shortened last step: a run
         // stopped early follows the same trajectory, so restarts continue bit-identically).
         const bool last = time_ >= control_.endTime * (1.0 - 1e-12) ||
                           (control_.maxSteps && step_ - firstStep >= *control_.maxSteps);
-        const double dt = last ? 0.0 : integrator_->deltaT();
-        const bool outputDue = last || outputSchedule_.due(time_, integrator_->deltaT());
+        const Step step = stepToTake();
+        accelerate();
+        applyViscosity();
+        applyWalls(step.dt);
+        audit_.completeContactWork(particles_.m, contactDeltaV_, acceleration_);
+        const double dt = last ? 0.0 : step.dt;
+        const bool outputDue = last || outputDueNow();
         // The function objects' restart state is that from before they see this level.
         const auto functionState = outputDue ? functionObjectState() : FunctionState{};
         observe(log, dt, forces.strainEnergy, wantEnergy, progress, firstStep);
@@ -84,9 +85,51 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         drift(dt);
         applyContact(dt);
         checkOrder(dt);
-        time_ += dt;
+        time_ = step.landsOnTarget ? step.target : time_ + dt;
         ++step_;
     }
+}
+
+// Under writeControl adjustableRunTime the time left to the next output or function-object
+// row is split into equal steps no longer than the integrator's Δt_n (OpenFOAM's adjustable
+// run time): the level lands on that time exactly, and no step is a sliver. The targets are
+// restart state, so a restarted run takes the same steps. endTime is not a target: a run
+// stopped there and continued must follow the uninterrupted run.
+template <int D>
+typename Simulation<D>::Step Simulation<D>::stepToTake() const
+{
+    const double deltaT = integrator_->deltaT();
+    if (control_.writeControl != WriteControl::adjustableRunTime)
+    {
+        return {deltaT};
+    }
+    double target = outputSchedule_.nextAfter(time_, deltaT);
+    for (const auto& object : functionObjects_)
+    {
+        target = std::min(target, object->nextWriteTime(time_, deltaT));
+    }
+    const double gap = target - time_;
+    if (!(gap > 0.0) || !std::isfinite(gap))
+    {
+        return {deltaT};
+    }
+    // Within round-off of a whole number of steps: that number (no extra sliver step).
+    const double steps = std::ceil(gap / deltaT * (1.0 - 1e-9));
+    if (steps > 1e15)
+    {
+        return {deltaT};
+    }
+    return {gap / steps, steps == 1.0, target};
+}
+
+template <int D>
+bool Simulation<D>::outputDueNow() const
+{
+    if (control_.writeControl == WriteControl::timeStep)
+    {
+        return step_ % static_cast<long>(control_.writeInterval) == 0;
+    }
+    return outputSchedule_.due(time_, integrator_->deltaT());
 }
 
 template <int D>
@@ -194,13 +237,13 @@ void Simulation<D>::accelerate()
 // The walls act as forces at x^n, t^n (walls/WallSet.hpp), so the leapfrog integrates them like
 // the internal forces; the friction work of the last drift is completed with F_t^n.
 template <int D>
-void Simulation<D>::applyWalls()
+void Simulation<D>::applyWalls(double dt)
 {
     if (walls_->empty())
     {
         return;
     }
-    walls_->applyForces(particles_, particles_.v, time_, integrator_->deltaT(), acceleration_);
+    walls_->applyForces(particles_, particles_.v, time_, dt, acceleration_);
     audit_.addWallWork(walls_->completeFrictionWork(particles_.x, previousX_));
 }
 

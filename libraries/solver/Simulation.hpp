@@ -80,12 +80,22 @@ private:
 
     // Simulation.cpp: the time loop and its phases (reads -> writes)
     void advance(RunLog& log, bool restarted);
+    // The step from this level (see writeControl): its length, and whether it ends exactly on
+    // an output time `target` (then the new time is set to it, free of accumulated round-off).
+    struct Step
+    {
+        double dt = 0.0;
+        bool landsOnTarget = false;
+        double target = 0.0;
+    };
+    Step stepToTake() const;
+    bool outputDueNow() const; // the VTK output is due at this level
     bool moveReference(long firstStep);           // x^n -> the reference configuration
     bool energyWanted(long firstStep) const;      // the function objects' needs -> bool
     ForceStatus computeForces(bool atReference,   // x^n, reference -> T (in acceleration_),
                               bool wantEnergy);   //   F^n, P^n, Π^n
     void accelerate();                            // T, m, g, fixed -> a^n (in place)
-    void applyWalls();                            // x^n, v^{n-1/2}, a, Δt_n -> a^n += F_wall/m,
+    void applyWalls(double dt);                            // x^n, v^{n-1/2}, a, Δt_n -> a^n += F_wall/m,
                                                   //   Φ^n, wall loads; W_walls (friction)
     void computeViscosity();                      // x^n, v^{n-1/2}, F^n -> a_visc^n
     void applyViscosity();                        // a_visc^n -> a^n += (before the walls: their

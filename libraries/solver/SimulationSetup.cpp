@@ -59,7 +59,7 @@ template <int D>
 Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& control,
                           const SchemeSettings& schemes, const InitialParticles& initial)
     : dicts_(dicts), control_(control), caseName_(dicts.caseName()),
-      outputSchedule_(control.writeInterval,
+      outputSchedule_(control.writeControl == WriteControl::timeStep ? 0.0 : control.writeInterval,
                       dicts.get("controlDict").find("writeInterval")->valueLocation()),
       pvd_(dicts.caseDir() / "VTK" / (dicts.caseName() + ".pvd"))
 {

@@ -195,6 +195,10 @@ public:
     {
         return {this->name() + ": " + std::to_string(written_) + " snapshots in " + folder_.string()};
     }
+    double nextWriteTime(double time, double deltaT) const override
+    {
+        return schedule_.nextAfter(time, deltaT);
+    }
     void saveState(std::map<std::string, double>& state) const override
     {
         state["next"] = schedule_.next();
