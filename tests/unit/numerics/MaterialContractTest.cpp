@@ -47,6 +47,13 @@ const std::map<std::string, MaterialCase>& cases()
         {"j2Plasticity",
          {"type j2Plasticity; E 2; nu 0.3; rho 1; yieldStress 0.02; hardeningModulus 0.1;",
           "type linearElastic; E 2; rho 1;", "type linearElastic; E 2; nu 0.3; rho 1;", true, true}},
+        // Associative (psi = phi) with a cut-off below the apex: then W = Psi + tau:dEp is the
+        // incremental potential (docs/theory/plasticity.md (P9.4)) and P = dW/dF while
+        // flowing on the cone, the cut-off or their edge (2D, 3D only).
+        {"druckerPrager",
+         {"type druckerPrager; E 2; nu 0.3; rho 1; frictionAngle 30; dilatancyAngle 30; "
+          "cohesion 0.01; tensileStrength 0.01;",
+          "", "type linearElastic; E 2; nu 0.3; rho 1;", true, true}},
     };
     return table;
 }

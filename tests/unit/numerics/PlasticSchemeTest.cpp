@@ -1,9 +1,11 @@
-// j2Plasticity in every registered scheme, total- and updated-Lagrangian (the latter with the
-// deformed reference of spec §7), 1D/2D/3D (docs/theory/plasticity.md §P7):
+// j2Plasticity (1D/2D/3D) and druckerPrager (2D/3D) in every registered scheme, total- and
+// updated-Lagrangian (the latter with the deformed reference of spec §7)
+// (docs/theory/plasticity.md §P7, §P9):
 //   - without yielding the forces are `hencky`'s to round-off (the same code computes both);
 //   - from a committed plastic history and with yielding samples: linear momentum of the
 //     internal forces zero to round-off, and the force is -∂Π/∂x of the incremental energy by
-//     central differences (every scheme derived from an energy; the stress is ∂W/∂F, (P4.2));
+//     central differences (every scheme derived from an energy; the stress is ∂W/∂F, (P4.2);
+//     druckerPrager: when associative, (P9.4); non-associative: momentum only);
 //   - a commit lowers Π by exactly the dissipation it reports (gradF: each sample keeps its own
 //     history, so this holds for it too), also after the updated-Lagrangian list changes;
 //   - gradF's samples each keep their own history (SampleHistory).
@@ -18,6 +20,13 @@ const char* kHencky = "type hencky; E 2.5; nu 0.3; rho 1;";
 const char* kElasticJ2 = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 1e30;";
 const char* kPlastic = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 0.02; "
                        "hardeningModulus 0.2;";
+// druckerPrager: a cohesion no state reaches (the apex pressure c cot φ too); yielding at
+// strains of 1 %, associative (a potential: forces = -dPi/dx) and not.
+const char* kElasticDP = "type druckerPrager; E 2.5; nu 0.3; rho 1; frictionAngle 30; cohesion 1e30;";
+const char* kAssociativeDP = "type druckerPrager; E 2.5; nu 0.3; rho 1; frictionAngle 30; "
+                             "dilatancyAngle 30; cohesion 0.01;";
+const char* kNonAssociativeDP = "type druckerPrager; E 2.5; nu 0.3; rho 1; frictionAngle 30; "
+                                "dilatancyAngle 5; cohesion 0.01; tensileStrength 0.005;";
 
 template <int D>
 double largest(const std::vector<Vec<D>>& T)
@@ -31,11 +40,12 @@ double largest(const std::vector<Vec<D>>& T)
 }
 
 template <int D>
-void noYieldingIsHencky(const std::string& name, bool updated, const std::string& extra = "")
+void noYieldingIsHencky(const std::string& name, bool updated, const std::string& extra = "",
+                        const char* elastic = kElasticJ2)
 {
-    INFO(name << extra << (updated ? " UL" : " TL") << " " << D << "D");
+    INFO(name << extra << (updated ? " UL" : " TL") << " " << D << "D " << elastic);
     test::SchemeFixture<D> hencky(test::schemeCloud<D>(7), test::schemeText<D>(name), kHencky, updated, test::schemeHOverDx<D>());
-    test::SchemeFixture<D> j2(test::schemeCloud<D>(7), test::schemeText<D>(name) + extra, kElasticJ2, updated, test::schemeHOverDx<D>());
+    test::SchemeFixture<D> j2(test::schemeCloud<D>(7), test::schemeText<D>(name) + extra, elastic, updated, test::schemeHOverDx<D>());
     const auto x = test::deformCurrent<D>(hencky.ref.x, 17);
     const auto T = hencky.forces(x);
     const auto Tj2 = j2.forces(x);
@@ -50,10 +60,11 @@ void noYieldingIsHencky(const std::string& name, bool updated, const std::string
 }
 
 template <int D>
-void plasticForces(const std::string& name, bool updated, const std::string& extra = "")
+void plasticForces(const std::string& name, bool updated, const std::string& extra = "",
+                   const char* plastic = kPlastic, bool potential = true)
 {
-    INFO(name << extra << (updated ? " UL" : " TL") << " " << D << "D");
-    test::SchemeFixture<D> fixture(test::schemeCloud<D>(7), test::schemeText<D>(name) + extra, kPlastic, updated, test::schemeHOverDx<D>());
+    INFO(name << extra << (updated ? " UL" : " TL") << " " << D << "D " << plastic);
+    test::SchemeFixture<D> fixture(test::schemeCloud<D>(7), test::schemeText<D>(name) + extra, plastic, updated, test::schemeHOverDx<D>());
     // A committed plastic history at one state, then the forces at another.
     const auto x1 = test::deformCurrent<D>(fixture.ref.x, 17);
     REQUIRE(fixture.commit(x1) > 0.0);
@@ -71,9 +82,10 @@ void plasticForces(const std::string& name, bool updated, const std::string& ext
         sumForce += t.norm();
     }
     CHECK(total.cwiseAbs().maxCoeff() < 1e-13 * sumForce);
-    if (name == "hourglass" || !extra.empty())
+    if (name == "hourglass" || !extra.empty() || !potential)
     {
-        return; // not an energy gradient: hourglass pair forces (spec §12), linearised samples
+        return; // not an energy gradient: hourglass pair forces (spec §12), linearised samples,
+                // non-associative flow (§P9)
     }
     const double step = 1e-6;
     double error = 0.0;
@@ -97,10 +109,10 @@ void plasticForces(const std::string& name, bool updated, const std::string& ext
 // their own state (docs/theory/plasticity.md §P7). A second commit further on checks states
 // that were already plastic.
 template <int D>
-void commitMovesTheDissipation(const std::string& name, bool updated)
+void commitMovesTheDissipation(const std::string& name, bool updated, const char* plastic = kPlastic)
 {
-    INFO(name << (updated ? " UL" : " TL") << " " << D << "D");
-    test::SchemeFixture<D> fixture(test::schemeCloud<D>(7), test::schemeText<D>(name), kPlastic, updated, test::schemeHOverDx<D>());
+    INFO(name << (updated ? " UL" : " TL") << " " << D << "D " << plastic);
+    test::SchemeFixture<D> fixture(test::schemeCloud<D>(7), test::schemeText<D>(name), plastic, updated, test::schemeHOverDx<D>());
     for (const unsigned seed : {17u, 29u})
     {
         const auto x = test::deformCurrent<D>(fixture.ref.x, seed);
@@ -126,6 +138,14 @@ void everyScheme()
             {
                 noYieldingIsHencky<D>(name, updated, " plasticSamples linearised;");
                 plasticForces<D>(name, updated, " plasticSamples linearised;");
+            }
+            if constexpr (D > 1)
+            {
+                noYieldingIsHencky<D>(name, updated, "", kElasticDP);
+                plasticForces<D>(name, updated, "", kAssociativeDP);
+                plasticForces<D>(name, updated, "", kNonAssociativeDP, false);
+                commitMovesTheDissipation<D>(name, updated, kAssociativeDP);
+                commitMovesTheDissipation<D>(name, updated, kNonAssociativeDP);
             }
         }
     }

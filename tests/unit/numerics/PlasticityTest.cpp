@@ -26,65 +26,12 @@ std::string j2Text(double H = hardening, double yield = sigmaY0)
            std::to_string(H) + ";";
 }
 
-// One material point driven like a particle of the solver.
+// test::MaterialPoint with the von Mises stress of its committed state.
 template <int D>
-struct MaterialPoint
+struct MaterialPoint : test::MaterialPoint<D>
 {
-    ParticleFields<D> fields;
-    std::unique_ptr<Material<D>> material;
-
-    explicit MaterialPoint(const std::string& text)
-    {
-        fields.setSize(1);
-        material = test::build<Material<D>>(text, {&fields, BodyRange{"point", 0, 1}, nullptr}, D);
-    }
-    Mat<D> stress(const Mat<D>& F) const
-    {
-        Mat<D> P;
-        double psi;
-        material->evaluate(&F, &P, &psi, 1, HistoryOf::particles(0));
-        return P;
-    }
-    double energy(const Mat<D>& F) const
-    {
-        Mat<D> P;
-        double psi;
-        material->evaluate(&F, &P, &psi, 1, HistoryOf::particles(0));
-        return psi;
-    }
-    // τ = P Fᵀ (in-plane)
-    Mat<D> kirchhoff(const Mat<D>& F) const { return stress(F) * F.transpose(); }
-    double commit(const Mat<D>& F)
-    {
-        const double V0 = 1.0;
-        return material->commit(&F, &V0, 0, 1);
-    }
-    double scalar(const std::string& name) const
-    {
-        double value;
-        fields.find(name)->array->get(0, &value);
-        return value;
-    }
-    double alpha() const { return scalar("equivalentPlasticStrain"); }
-    // The committed Cp⁻¹ as a 3×3 (2D: the zz component from its own field).
-    Eigen::Matrix3d inversePlastic() const
-    {
-        double values[D * D];
-        fields.find("inversePlasticCauchyGreen")->array->get(0, values);
-        Eigen::Matrix3d C = Eigen::Matrix3d::Identity();
-        for (int i = 0; i < D; ++i)
-        {
-            for (int j = 0; j < D; ++j)
-            {
-                C(i, j) = values[i * D + j];
-            }
-        }
-        if (D == 2)
-        {
-            C(2, 2) = scalar("inversePlasticCauchyGreenZZ");
-        }
-        return C;
-    }
+    using test::MaterialPoint<D>::MaterialPoint;
+    using test::MaterialPoint<D>::inversePlastic;
     // The von Mises stress of the committed state at F, from be = F Cp⁻¹ Fᵀ and Hencky's law
     // written out here independently of the material's code.
     double vonMises(const Mat<D>& F) const

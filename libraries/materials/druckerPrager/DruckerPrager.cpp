@@ -1,0 +1,163 @@
+#include "materials/druckerPrager/DruckerPrager.hpp"
+
+#include "core/Format.hpp"
+
+#include <numbers>
+
+namespace sph
+{
+
+ConeMatching::Kind ConeMatching::parse(const std::string& name)
+{
+    // The schema's choices admit only these words.
+    return name == "outer" ? Kind::outer : name == "inner" ? Kind::inner : Kind::planeStrain;
+}
+
+double ConeMatching::eta(Kind kind, double angle)
+{
+    if (kind == Kind::planeStrain)
+    {
+        const double t = std::tan(angle); // Bui et al. 2008: 3 tan φ/√(9 + 12 tan² φ)
+        return 3.0 * t / std::sqrt(9.0 + 12.0 * t * t);
+    }
+    const double sign = kind == Kind::outer ? -1.0 : 1.0; // 3 ∓ sin φ
+    return 6.0 * std::sin(angle) / (std::sqrt(3.0) * (3.0 + sign * std::sin(angle)));
+}
+
+double ConeMatching::xi(Kind kind, double angle)
+{
+    if (kind == Kind::planeStrain)
+    {
+        const double t = std::tan(angle);
+        return 3.0 / std::sqrt(9.0 + 12.0 * t * t);
+    }
+    const double sign = kind == Kind::outer ? -1.0 : 1.0;
+    return 6.0 * std::cos(angle) / (std::sqrt(3.0) * (3.0 + sign * std::sin(angle)));
+}
+
+template <int D>
+std::string DruckerPrager<D>::description()
+{
+    return "Finite-strain Drucker-Prager plasticity (friction, cohesion, dilatancy, tension "
+           "cut-off), perfectly plastic: F = Fe Fp, Hencky elasticity, cone/apex return in "
+           "principal log strains (docs/theory/plasticity.md §P9); 2D plane strain and 3D.";
+}
+
+template <int D>
+Schema DruckerPrager<D>::schema()
+{
+    return Material<D>::commonSchema()
+        .include(IsotropicElasticity::schema())
+        .add(Key::real("frictionAngle", "internal friction angle phi [degrees] (a "
+                                         "pressure-independent material, phi = 0, is "
+                                         "j2Plasticity)")
+                 .range(0.0, 90.0, false, false))
+        .add(Key::real("cohesion", "cohesion c [Pa]").nonNegative().defaultValue("0"))
+        .add(Key::real("dilatancyAngle", "dilatancy angle psi [degrees], at most frictionAngle; "
+                                         "0: no plastic volume change, = phi: associative")
+                 .range(0.0, 90.0, true, false)
+                 .defaultValue("0"))
+        .add(Key::real("tensileStrength", "tension cut-off sigmaT [Pa]: the largest pressure "
+                                          "tr(tau)/3; at most (and by default) the cone's apex "
+                                          "pressure xi c/eta")
+                 .nonNegative()
+                 .optional())
+        .add(Key::word("coneMatching", "which Mohr-Coulomb the cone matches: planeStrain (Bui "
+                                       "et al. 2008), outer (triaxial compression), inner "
+                                       "(triaxial extension)")
+                 .choices(ConeMatching::names())
+                 .defaultValue("planeStrain"));
+}
+
+template <int D>
+DruckerPrager<D>::DruckerPrager(const Params& params, const typename Material<D>::Args& args)
+    : ReturnMapPlasticity<D, DruckerPrager<D>>(params, args), cohesion_(params.real("cohesion"))
+{
+    const double degree = std::numbers::pi / 180.0;
+    const double phi = params.real("frictionAngle");
+    const double psi = params.real("dilatancyAngle");
+    if (psi > phi)
+    {
+        params.fail("dilatancyAngle",
+                    "druckerPrager: dilatancyAngle " + formatNumber(psi) +
+                        " exceeds frictionAngle " + formatNumber(phi) +
+                        ": the plastic flow would create energy under high confinement",
+                    {"Use a value in [0, " + formatNumber(phi) + "]; 0 (no plastic volume "
+                     "change) is usual for soils, " + formatNumber(phi) + " is associative."});
+    }
+    const ConeMatching::Kind kind = ConeMatching::parse(params.word("coneMatching"));
+    eta_ = ConeMatching::eta(kind, phi * degree);
+    xi_ = ConeMatching::xi(kind, phi * degree);
+    etaBar_ = ConeMatching::eta(kind, psi * degree);
+    apexPressure_ = xi_ * cohesion_ / eta_;
+    tensileStrength_ = params.has("tensileStrength") ? params.real("tensileStrength") : apexPressure_;
+    if (tensileStrength_ > apexPressure_)
+    {
+        params.fail("tensileStrength",
+                    "druckerPrager: tensileStrength " + formatNumber(tensileStrength_) +
+                        " exceeds the cone's apex pressure xi c/eta = " +
+                        formatNumber(apexPressure_) + ": no stress on the cone has that pressure",
+                    {"Use a value in [0, " + formatNumber(apexPressure_) +
+                     "], or leave the key out (the apex)."});
+    }
+}
+
+template <int D>
+PlasticFlow DruckerPrager<D>::returnPrincipal(Eigen::Vector3d& eps, double alpha) const
+{
+    const double K = this->law_.K;
+    const double mu = this->law_.mu;
+    const double ev = eps.sum();
+    const Eigen::Vector3d dev = eps - Eigen::Vector3d::Constant(ev / 3.0);
+    const double pTrial = K * ev;
+    const double rootJ2Trial = std::sqrt(2.0) * mu * dev.norm(); // √J2 = |s|/√2, s = 2μ dev ε
+    const double phiTrial = rootJ2Trial + eta_ * pTrial - xi_ * cohesion_;
+    if (!(phiTrial > 0.0) && !(pTrial > tensileStrength_))
+    {
+        return {};
+    }
+    double deltaGamma = 0.0;
+    double shearScale = 0.0; // s = shearScale s_tr
+    double evReturned = 0.0;
+    bool onCone = false;
+    if (phiTrial > 0.0)
+    {
+        // 1. The smooth cone (P9.3), accepted if it did not pass the apex nor the cut-off.
+        deltaGamma = phiTrial / (mu + K * eta_ * etaBar_);
+        shearScale = 1.0 - mu * deltaGamma / rootJ2Trial;
+        evReturned = ev - etaBar_ * deltaGamma; // exactly ev when ψ = 0
+        onCone = shearScale >= 0.0 && K * evReturned <= tensileStrength_;
+    }
+    if (!onCone)
+    {
+        // 2. The cut-off p = σt: alone while the trial shear fits under the cone there, else
+        // the edge where both meet (the apex when σt = ξ c/η).
+        const double largest = std::max(xi_ * cohesion_ - eta_ * tensileStrength_, 0.0);
+        const double cutOff = (pTrial - tensileStrength_) / K; // Δγ₂ with the cut-off alone
+        evReturned = tensileStrength_ / K;
+        if (rootJ2Trial <= largest)
+        {
+            shearScale = 1.0;
+            deltaGamma = cutOff;
+        }
+        else
+        {
+            shearScale = largest / rootJ2Trial;
+            const double cone = (rootJ2Trial - largest) / mu; // Δγ₁
+            deltaGamma = cone + std::max(cutOff - etaBar_ * cone, 0.0);
+        }
+    }
+    const Eigen::Vector3d devReturned = shearScale * dev;
+    eps = devReturned + Eigen::Vector3d::Constant(evReturned / 3.0);
+    // τ:Δεp = s:Δe + p Δεv (P9.4), and α += √(2/3)|dev Δεp|.
+    const Eigen::Vector3d plasticDev = dev - devReturned;
+    const double work = 2.0 * mu * devReturned.dot(plasticDev) + K * evReturned * (ev - evReturned);
+    return {deltaGamma, alpha + std::sqrt(2.0 / 3.0) * plasticDev.norm(), work};
+}
+
+template class DruckerPrager<2>;
+template class DruckerPrager<3>;
+
+SPH_REGISTER_DIM_MODEL_FOR(Material, DruckerPrager, "druckerPrager", 2, 3);
+
+} // namespace sph

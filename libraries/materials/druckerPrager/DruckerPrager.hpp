@@ -1,0 +1,75 @@
+#pragma once
+// `druckerPrager`: finite-strain Drucker–Prager plasticity of a frictional material (soil,
+// sand), perfectly plastic, non-associated, with a tension cut-off (docs/theory/plasticity.md
+// §P9). F = Fe Fp and Hencky elasticity on be = F Cp⁻¹ Fᵀ as j2Plasticity (§P1–§P4, §P7: all
+// of that is ReturnMapPlasticity's); the return in principal log strains is its own:
+//
+//   p = tr τ/3 (tension > 0), √J2 = |dev τ|/√2,
+//   Φ = √J2 + η p − ξ c,   G = √J2 + η̄ p,   p ≤ σt                        (P9.1)
+//   smooth cone: Δγ = Φ_tr/(μ + K η η̄), s = (1 − μΔγ/√J2_tr) s_tr,
+//                p = p_tr − K η̄ Δγ   while √J2 ≥ 0 and p ≤ σt;             (P9.3)
+//   else the cut-off: p = σt, √J2 = min(√J2_tr, ξ c − η σt) (with the default
+//   σt = ξ c/η: the apex, s = 0).
+//
+// η, ξ from φ and η̄ from ψ by the cone's matching to Mohr–Coulomb (planeStrain: Bui et al.
+// 2008; outer/inner: de Souza Neto et al. 2008 §8.2.4). ψ = 0: no plastic volume change on
+// the cone; ψ = φ: associative. The energy is W = Ψ(εe) + τ:Δεp (P9.4), the step's plastic
+// work being what a commit dissipates; without yielding this is `hencky` to the bit. With
+// ψ ≠ φ the stress is not ∂W/∂F (no incremental potential). α (output only):
+// α += √(2/3)|dev Δεp|. 2D plane strain and 3D only (registered so: a 1D case is told so).
+// Keys:
+//   E, nu, rho       | as `hencky`
+//   frictionAngle    | φ [degrees], in (0, 90)                                    | required
+//   cohesion         | c [Pa], ≥ 0                                               | 0
+//   dilatancyAngle   | ψ [degrees], in [0, φ]                                     | 0
+//   tensileStrength  | σt [Pa], in [0, ξ c/η] (the cone's apex pressure)          | ξ c/η
+//   coneMatching     | planeStrain | outer | inner                               | planeStrain
+// Fields: those of j2Plasticity (PlasticHistory.hpp).
+
+#include "materials/plasticity/ReturnMapPlasticity.hpp"
+
+namespace sph
+{
+
+// η and ξ of a cone matched to Mohr–Coulomb of angle φ [radians] (η̄: the same with ψ).
+struct ConeMatching
+{
+    enum class Kind
+    {
+        planeStrain,
+        outer,
+        inner
+    };
+    static std::vector<std::string> names() { return {"planeStrain", "outer", "inner"}; }
+    static Kind parse(const std::string& name);
+    static double eta(Kind kind, double angle);
+    static double xi(Kind kind, double angle);
+};
+
+template <int D>
+class DruckerPrager : public ReturnMapPlasticity<D, DruckerPrager<D>>
+{
+public:
+    using Flow = PlasticFlow;
+    static std::string description();
+    static Schema schema();
+    DruckerPrager(const Params& params, const typename Material<D>::Args& args);
+
+    // The model's part of ReturnMapPlasticity (§P9): the cone/cut-off return in principal log
+    // strains, W − Ψ(εe) = τ:Δεp, and the commit's V0 τ:Δεp.
+    Flow returnPrincipal(Eigen::Vector3d& eps, double alpha) const;
+    double extraEnergy(const Flow& flow) const { return flow.dissipation; }
+    double dissipated(double V0, const Flow& flow) const { return V0 * flow.dissipation; }
+
+    double apexPressure() const { return apexPressure_; }
+
+private:
+    double eta_;          // η
+    double xi_;           // ξ
+    double etaBar_;       // η̄
+    double cohesion_;     // c
+    double apexPressure_; // ξ c/η
+    double tensileStrength_;
+};
+
+} // namespace sph

@@ -1,0 +1,104 @@
+#pragma once
+// The per-particle history of the plastic materials (docs/theory/plasticity.md §P1, §P7): the
+// inverse plastic right Cauchy–Green tensor Cp⁻¹ (its in-plane block; in 2D its zz component
+// too; in 1D exp(−2 εp)) and the equivalent plastic strain α, as restart fields of the
+// particle registry, plus the display fields every plastic material shows. One set of field
+// specs for all plastic materials: bodies of different plastic materials share the arrays, and
+// restart files keep loading whichever material wrote them.
+//
+// Fields: restart:inversePlasticCauchyGreen, restart:inversePlasticCauchyGreenZZ (2D),
+// restart:equivalentPlasticStrain (the committed state), plasticStrain and yielding (display,
+// derived by the material at the written level).
+
+#include "materials/Material.hpp"
+
+#include <memory>
+
+namespace sph
+{
+
+// One committed state, and the same as historyComponents() numbers (HistoryOf::samples):
+// Cp⁻¹ (D×D, row-major), then Cp⁻¹_zz (2D), then α.
+template <int D>
+struct PlasticState
+{
+    Mat<D> inversePlastic = Mat<D>::Identity();
+    double inversePlasticZZ = 1.0;
+    double alpha = 0.0;
+
+    static constexpr std::size_t packedSize = D * D + (D == 2 ? 1 : 0) + 1;
+    void pack(double* out) const;
+    static PlasticState unpack(const double* in);
+};
+
+template <int D>
+class PlasticHistory
+{
+public:
+    static std::vector<FieldSpec> fields();
+    static const FieldSpec& plasticStrainField();
+    static const FieldSpec& yieldingField();
+
+    // Declares the restart fields in args.fields (or owns them when the material is built
+    // alone, as in tests: then points beyond args.particles.end read as virgin).
+    explicit PlasticHistory(const typename Material<D>::Args& args);
+
+    PlasticState<D> state(std::size_t a) const;
+    void store(std::size_t a, const PlasticState<D>& s);
+
+private:
+    std::unique_ptr<ParticleFields<D>> ownFields_;
+    std::vector<Mat<D>>* inversePlastic_ = nullptr;
+    std::vector<double>* inversePlasticZZ_ = nullptr; // 2D only
+    std::vector<double>* alpha_ = nullptr;
+};
+
+// Inline: read for every particle and every gradF sample of every force evaluation.
+template <int D>
+inline void PlasticState<D>::pack(double* out) const
+{
+    for (int i = 0; i < D * D; ++i)
+    {
+        out[i] = inversePlastic(i / D, i % D);
+    }
+    if constexpr (D == 2)
+    {
+        out[D * D] = inversePlasticZZ;
+    }
+    out[packedSize - 1] = alpha;
+}
+
+template <int D>
+inline PlasticState<D> PlasticState<D>::unpack(const double* in)
+{
+    PlasticState s;
+    for (int i = 0; i < D * D; ++i)
+    {
+        s.inversePlastic(i / D, i % D) = in[i];
+    }
+    if constexpr (D == 2)
+    {
+        s.inversePlasticZZ = in[D * D];
+    }
+    s.alpha = in[packedSize - 1];
+    return s;
+}
+
+template <int D>
+inline PlasticState<D> PlasticHistory<D>::state(std::size_t a) const
+{
+    PlasticState<D> s;
+    if (ownFields_ && a >= alpha_->size())
+    {
+        return s; // a material built alone (tests): points it was not sized for are virgin
+    }
+    s.inversePlastic = (*inversePlastic_)[a];
+    if constexpr (D == 2)
+    {
+        s.inversePlasticZZ = (*inversePlasticZZ_)[a];
+    }
+    s.alpha = (*alpha_)[a];
+    return s;
+}
+
+} // namespace sph

@@ -1,0 +1,289 @@
+#pragma once
+// What every finite-strain plastic material of sphSolid shares (docs/theory/plasticity.md
+// §P1–§P4, §P7): F = Fe Fp with Hencky elasticity on be = F Cp⁻¹ Fᵀ, the trial state and its
+// principal log strains, the update of Cp⁻¹ from the returned strains, P = τ F⁻ᵀ, the
+// evaluation from a particle's or a gradF sample's committed history (HistoryOf), the commit,
+// the linearised correction, the wave-speed bound and the display fields. A model adds only
+// what is its own, as non-virtual members of Model (CRTP: the return is inlined in the loop
+// that runs once per particle and gradF sample):
+//
+//   Flow returnPrincipal(Eigen::Vector3d& eps, double alpha) const;  2D/3D: the return in
+//       principal log strains (eps: trial in, returned out; alpha: the committed α)
+//   Flow returnUniaxial(double& eps, double alpha) const;            1D bar (only if the
+//       model is registered in 1D)
+//   double extraEnergy(const Flow& flow) const;   W − Ψ(εe) when the point has flowed (now or
+//       before): the stored hardening energy plus the step's dissipation
+//   double dissipated(double V0, const Flow& flow) const;  what a commit books, V0 ΔD
+//
+// Without plastic flow (now or before) the energy and the stress are `hencky`'s to the bit.
+
+#include "materials/LogarithmicElasticity.hpp"
+#include "materials/plasticity/PlasticHistory.hpp"
+
+namespace sph
+{
+
+// What a return did at one point: its plastic multiplier (> 0: the point flows), the α it
+// leads to and the step's dissipation per unit initial volume.
+struct PlasticFlow
+{
+    double deltaGamma = 0.0;
+    double alpha = 0.0;
+    double dissipation = 0.0;
+};
+
+template <int D, class Model>
+class ReturnMapPlasticity : public Material<D>
+{
+public:
+    using State = PlasticState<D>;
+    using Flow = PlasticFlow;
+    static std::vector<FieldSpec> fields() { return PlasticHistory<D>::fields(); }
+
+    // The return map at one F from a committed state.
+    struct Result
+    {
+        Mat<D> P;
+        double energy = 0.0;    // W, e.g. (P4.2)
+        Flow flow;              // flow.deltaGamma > 0: the point flows plastically
+        double maxAbsTau = 0.0; // max |τᵢ| (for the wave-speed bound)
+        State next;             // the state to commit (when asked for)
+    };
+    // flow = false: the trial state (the elastic predictor) only.
+    Result returnMap(const Mat<D>& F, const State& committed, bool wantNext, bool flow = true) const;
+
+    double energy(const Mat<D>& F) const override { return returnMap(F, {}, false).energy; }
+    Mat<D> stress(const Mat<D>& F) const override { return returnMap(F, {}, false).P; }
+    double waveSpeed(const Mat<D>& F) const override { return waveSpeedOf(F, State{}); }
+    void evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n,
+                  HistoryOf history) const override;
+    double maxWaveSpeed(const Mat<D>* F, std::size_t n, std::size_t first) const override;
+    double youngsModulus() const override { return elastic_.E; }
+
+    bool hasHistory() const override { return true; }
+    // A = ∂(P − P_tr)/∂F by central differences of the return (step 1e-7 |F|).
+    PlasticCorrection<D> plasticCorrection(const Mat<D>& F, std::size_t a) const override;
+    double commit(const Mat<D>* F, const double* V0, std::size_t first, std::size_t n) override;
+    State state(std::size_t a) const { return history_.state(a); }
+
+    std::size_t historyComponents() const override { return State::packedSize; }
+    void packHistory(std::size_t a, double* out) const override { state(a).pack(out); }
+
+protected:
+    ReturnMapPlasticity(const Params& params, const typename Material<D>::Args& args);
+
+    IsotropicElasticity elastic_;
+    HenckyLaw law_;
+
+private:
+    const Model& model() const { return static_cast<const Model&>(*this); }
+    double waveSpeedOf(const Mat<D>& F, const State& state) const;
+
+    PlasticHistory<D> history_;
+};
+
+template <int D, class Model>
+ReturnMapPlasticity<D, Model>::ReturnMapPlasticity(const Params& params,
+                                                   const typename Material<D>::Args& args)
+    : Material<D>(params), elastic_(IsotropicElasticity::read<D>(params)), law_(elastic_),
+      history_(args)
+{
+    if (args.F && args.fields)
+    {
+        // What ParaView shows at a level: the return at that level's F, not yet committed (§P7).
+        const std::vector<Mat<D>>* F = args.F;
+        args.fields->template deriveOver<double>(
+            PlasticHistory<D>::plasticStrainField(), args.particles.begin, args.particles.end,
+            [this, F](std::size_t a) { return returnMap((*F)[a], state(a), false).flow.alpha; });
+        args.fields->template deriveOver<int>(
+            PlasticHistory<D>::yieldingField(), args.particles.begin, args.particles.end,
+            [this, F](std::size_t a)
+            { return returnMap((*F)[a], state(a), false).flow.deltaGamma > 0.0 ? 1 : 0; });
+    }
+}
+
+template <int D, class Model>
+typename ReturnMapPlasticity<D, Model>::Result
+ReturnMapPlasticity<D, Model>::returnMap(const Mat<D>& F, const State& committed, bool wantNext,
+                                         bool flow) const
+{
+    Result r;
+    if constexpr (D == 1)
+    {
+        // §P6: ε = ½ ln(λ² Cp⁻¹), then the model's uniaxial return.
+        const double lambda = F(0, 0);
+        const double E = elastic_.E;
+        double eps = 0.5 * std::log(lambda * lambda * committed.inversePlastic(0, 0));
+        if (flow)
+        {
+            r.flow = model().returnUniaxial(eps, committed.alpha);
+        }
+        const double tau = E * eps;
+        r.P = Mat<D>::Constant(tau / lambda);
+        r.maxAbsTau = std::abs(tau);
+        r.energy = 0.5 * E * eps * eps;
+        if (wantNext)
+        {
+            r.next.inversePlastic = Mat<D>::Constant(std::exp(2.0 * eps) / (lambda * lambda));
+        }
+    }
+    else
+    {
+        PrincipalStrain<D> p =
+            principalStrain<D>(F * committed.inversePlastic * F.transpose(), committed.inversePlasticZZ);
+        if (flow)
+        {
+            r.flow = model().returnPrincipal(p.eps, committed.alpha);
+        }
+        const Eigen::Vector3d tau = law_.kirchhoff(p.eps);
+        const Mat<D> Finv = F.inverse();
+        r.P = p.assemble(tau) * Finv.transpose();
+        r.maxAbsTau = tau.cwiseAbs().maxCoeff();
+        r.energy = law_.energy(p.eps);
+        if (wantNext && r.flow.deltaGamma > 0.0)
+        {
+            // (§P4 step 4) Cp⁻¹ = F⁻¹ be F⁻ᵀ of the returned be = Σ exp(2εᵢ) nᵢ⊗nᵢ.
+            const Eigen::Vector3d be = (2.0 * p.eps).array().exp();
+            const Mat<D> Cp = Finv * p.assemble(be) * Finv.transpose();
+            r.next.inversePlastic = 0.5 * (Cp + Cp.transpose());
+            r.next.inversePlasticZZ = D == 2 ? be[2] : 1.0;
+        }
+    }
+    if (!(r.flow.deltaGamma > 0.0))
+    {
+        r.flow.alpha = committed.alpha;
+    }
+    if (committed.alpha > 0.0 || r.flow.deltaGamma > 0.0)
+    {
+        // Without any plastic flow the energy stays Hencky's to the bit.
+        r.energy += model().extraEnergy(r.flow);
+    }
+    r.next.alpha = r.flow.alpha;
+    return r;
+}
+
+template <int D, class Model>
+void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double* psi,
+                                             std::size_t n, HistoryOf history) const
+{
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        if (!history.perSample())
+        {
+            const Result r = returnMap(F[i], state(history.particle(i)), false, !history.trialAround);
+            P[i] = r.P;
+            if (psi)
+            {
+                psi[i] = r.energy;
+            }
+            continue;
+        }
+        const double* committed = history.states + i * history.stride;
+        const bool wantNext = history.next != nullptr;
+        const Result r = returnMap(F[i], State::unpack(committed), wantNext);
+        P[i] = r.P;
+        if (psi)
+        {
+            psi[i] = r.energy;
+        }
+        if (wantNext)
+        {
+            double* next = history.next + i * history.stride;
+            if (r.flow.deltaGamma > 0.0)
+            {
+                r.next.pack(next);
+            }
+            else
+            {
+                std::copy(committed, committed + State::packedSize, next);
+            }
+            history.dissipation[i] = r.flow.dissipation;
+        }
+    }
+}
+
+template <int D, class Model>
+PlasticCorrection<D> ReturnMapPlasticity<D, Model>::plasticCorrection(const Mat<D>& F,
+                                                                      std::size_t a) const
+{
+    const State s = state(a);
+    const auto correction = [&](const Mat<D>& at, double* dW)
+    {
+        const Result full = returnMap(at, s, false);
+        const Result trial = returnMap(at, s, false, false);
+        if (dW)
+        {
+            *dW = full.energy - trial.energy;
+        }
+        return Mat<D>(full.P - trial.P);
+    };
+    PlasticCorrection<D> c;
+    if (!(returnMap(F, s, false).flow.deltaGamma > 0.0))
+    {
+        return c;
+    }
+    c.flowing = true;
+    c.dP = correction(F, &c.dW);
+    const double h = 1e-7 * std::max(1.0, F.norm());
+    for (int k = 0; k < D; ++k)
+    {
+        for (int l = 0; l < D; ++l)
+        {
+            Mat<D> plus = F;
+            Mat<D> minus = F;
+            plus(k, l) += h;
+            minus(k, l) -= h;
+            const Mat<D> dPdF = (correction(plus, nullptr) - correction(minus, nullptr)) / (2 * h);
+            for (int i = 0; i < D; ++i)
+            {
+                for (int j = 0; j < D; ++j)
+                {
+                    c.A(i * D + j, k * D + l) = dPdF(i, j);
+                }
+            }
+        }
+    }
+    return c;
+}
+
+template <int D, class Model>
+double ReturnMapPlasticity<D, Model>::waveSpeedOf(const Mat<D>& F, const State& s) const
+{
+    const Result r = returnMap(F, s, false);
+    // (P2.5): the elastic modulus bounds the elastoplastic one; the total stretch sets the scale.
+    const double M = D == 1 ? elastic_.E : law_.longitudinalModulus();
+    const double lowest = stretchSquaredRange<D>(F).first;
+    return std::sqrt((M + r.maxAbsTau) / lowest / this->density());
+}
+
+template <int D, class Model>
+double ReturnMapPlasticity<D, Model>::maxWaveSpeed(const Mat<D>* F, std::size_t n,
+                                                   std::size_t first) const
+{
+    double c = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        c = std::max(c, waveSpeedOf(F[i], state(first + i)));
+    }
+    return c;
+}
+
+template <int D, class Model>
+double ReturnMapPlasticity<D, Model>::commit(const Mat<D>* F, const double* V0, std::size_t first,
+                                             std::size_t n)
+{
+    double dissipated = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const std::size_t a = first + i;
+        const Result r = returnMap(F[i], state(a), true);
+        if (r.flow.deltaGamma > 0.0)
+        {
+            history_.store(a, r.next);
+            dissipated += model().dissipated(V0[i], r.flow);
+        }
+    }
+    return dissipated;
+}
+
+} // namespace sph
