@@ -34,9 +34,9 @@ int guardedMain(const std::function<int()>& body)
         std::cout.flush();
         std::cerr << "\n--> " << InputError::programName() << " FATAL I/O ERROR\n"
                   << error.what()
-                  << "\nThe files written before are intact: make room on the disk (or raise the "
-                     "file-size limit) and run again; a solver run continues with 'startFrom "
-                     "latestTime;'.\n"
+                  << "\nThe files written before are intact: make room on the disk, raise the "
+                     "file-size limit or make the folder writable, and run again; a solver run "
+                     "continues with 'startFrom latestTime;'.\n"
                   << std::flush;
         return 4;
     }
