@@ -1,6 +1,7 @@
 #include "Application.hpp"
 
 #include "InputError.hpp"
+#include "IoError.hpp"
 
 #include <iostream>
 #include <new>
@@ -27,6 +28,17 @@ int guardedMain(const std::function<int()>& body)
                   << failure.what() << "\n"
                   << std::flush;
         return 2;
+    }
+    catch (const IoError& error)
+    {
+        std::cout.flush();
+        std::cerr << "\n--> " << InputError::programName() << " FATAL I/O ERROR\n"
+                  << error.what()
+                  << "\nThe files written before are intact: make room on the disk, raise the "
+                     "file-size limit or make the folder writable, and run again; a solver run "
+                     "continues with 'startFrom latestTime;'.\n"
+                  << std::flush;
+        return 4;
     }
     catch (const std::bad_alloc&)
     {

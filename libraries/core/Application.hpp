@@ -3,6 +3,8 @@
 // message and an exit code, never an uncaught exception, abort or core dump.
 //   InputError        -> the formatted message, exit 1
 //   NumericalFailure  -> the diagnosis, exit 2 (the last good state was written before throwing)
+//   IoError           -> the file and the system's reason, exit 4 (every output already in
+//                        place is intact: io/AtomicFile)
 //   anything else     -> "internal error" with what() and a request to report it, exit 3
 
 #include <functional>

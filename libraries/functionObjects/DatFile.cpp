@@ -1,10 +1,10 @@
 #include "functionObjects/DatFile.hpp"
 
-#include "core/InputError.hpp"
 #include "io/AtomicFile.hpp"
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <sstream>
 
 namespace sph
@@ -45,12 +45,7 @@ void DatFile::open(double startTime, bool restarted)
         }
     }
     writeTextAtomically(file_, kept);
-    out_.open(file_, std::ios::app);
-    if (!out_)
-    {
-        throw InputError("cannot open '" + file_.string() + "' for writing",
-                         {"Check that the case folder is writable."});
-    }
+    out_.emplace(file_, file_, CheckedFile::Mode::append);
 }
 
 void DatFile::write(double time, const std::vector<double>& values)
@@ -65,8 +60,7 @@ void DatFile::write(double time, const std::vector<double>& values)
         line += buffer;
     }
     line += '\n';
-    out_ << line;
-    out_.flush();
+    out_->write(line);
 }
 
 } // namespace sph

@@ -1,10 +1,13 @@
 #pragma once
 // A gnuplot-ready table: one '#' header line of column names, then rows of numbers, first
-// column `time`. Every row is flushed as it is written, so a killed run keeps what it wrote.
-// A restart keeps the rows before its start time and appends.
+// column `time`. Every row is handed to the system as it is written, so a killed run keeps what
+// it wrote; a row that cannot be written (disk full) is cut off whole and stops the run with an
+// IoError (io/CheckedFile). A restart keeps the rows before its start time and appends.
+
+#include "io/CheckedFile.hpp"
 
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,7 +27,7 @@ public:
 private:
     std::filesystem::path file_;
     std::vector<std::string> columns_;
-    std::ofstream out_;
+    std::optional<CheckedFile> out_; // open from open() on
 };
 
 } // namespace sph

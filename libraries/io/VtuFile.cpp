@@ -2,6 +2,7 @@
 
 #include "core/Format.hpp"
 #include "core/InputError.hpp"
+#include "core/IoError.hpp"
 #include "io/AtomicFile.hpp"
 
 #include <vtkCallbackCommand.h>
@@ -9,6 +10,8 @@
 #include <vtkCellType.h>
 #include <vtkCommand.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
+#include <vtkExecutive.h>
 #include <vtkFloatArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
@@ -21,6 +24,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
@@ -53,6 +57,21 @@ private:
     vtkNew<vtkCallbackCommand> callback_;
     std::string messages_;
 };
+
+// Why VTK could not write: the system's reason if there is one, else VTK's own words.
+std::string writeFailure(unsigned long vtkError, int systemError, const std::string& messages)
+{
+    if (systemError != 0)
+    {
+        return IoError::reasonFor(systemError);
+    }
+    if (vtkError == vtkErrorCode::OutOfDiskSpaceError)
+    {
+        return IoError::reasonFor(ENOSPC);
+    }
+    const char* name = vtkErrorCode::GetStringFromErrorCode(vtkError);
+    return "VTK: " + (messages.empty() && name ? std::string(name) : messages);
+}
 
 // VTK only reads the arrays while writing: they are wrapped, not copied (save = 1: VTK never
 // frees them).
@@ -205,16 +224,22 @@ void writeVtu(const std::filesystem::path& file, const VtuData& data)
     writeAtomically(file, [&](const std::filesystem::path& temporary) {
         auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
         ErrorCollector errors(writer);
+        // A failed write is also reported by the pipeline's executive, printed unless caught.
+        ErrorCollector pipelineErrors(writer->GetExecutive());
         writer->SetFileName(temporary.c_str());
         writer->SetInputData(grid);
         writer->SetDataModeToAppended();
         writer->EncodeAppendedDataOff();
         writer->SetCompressorTypeToZLib();
-        if (writer->Write() != 1 || !errors.messages().empty())
+        // VTK reports a failed write by its result and error code (a full disk stops its
+        // stream); the reason is the system's, from errno, when the stream left one.
+        errno = 0;
+        const int written = writer->Write();
+        const int error = errno;
+        if (written != 1 || writer->GetErrorCode() != vtkErrorCode::NoError ||
+            !errors.messages().empty())
         {
-            throw InputError("cannot write '" + file.string() + "'",
-                             {"VTK: " + errors.messages(),
-                              "Check that the folder is writable and the disk is not full."});
+            throw IoError(file, writeFailure(writer->GetErrorCode(), error, errors.messages()));
         }
     });
 }

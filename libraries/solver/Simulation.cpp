@@ -2,6 +2,7 @@
 #include "solver/Simulation.hpp"
 
 #include "core/Application.hpp"
+#include "io/AtomicFile.hpp"
 #include "particles/Parallel.hpp"
 
 #include <chrono>
@@ -14,6 +15,12 @@ namespace sph
 template <int D>
 RunSummary Simulation<D>::run(RunLog& log)
 {
+    // A run killed while writing left its temporaries (io/AtomicFile) beside the outputs:
+    // nothing reads them, so they would only pile up.
+    for (const char* folder : {"VTK", "postProcessing"})
+    {
+        removeStaleTemporaries(dicts_.caseDir() / folder);
+    }
     const bool restarted = control_.startFromLatest && restoreLatest(log);
     if (!restarted)
     {

@@ -5,6 +5,7 @@
 #include "core/CommandLine.hpp"
 #include "core/LibraryLoader.hpp"
 #include "core/ModelListing.hpp"
+#include "io/AtomicFile.hpp"
 #include "solver/CaseSettings.hpp"
 #include "solver/ParticleFile.hpp"
 
@@ -63,6 +64,7 @@ int sphParticlesMain(int argc, const char* const* argv)
         return 0;
     }
     const std::filesystem::path file = particleFilePath(dicts.caseDir());
+    removeStaleTemporaries(file.parent_path()); // of a run killed while writing (io/AtomicFile)
     writeParticleFile(file, particles);
     std::cout << "Wrote " << file.string() << "\n";
     return 0;

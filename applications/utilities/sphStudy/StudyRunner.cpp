@@ -43,6 +43,20 @@ std::string firstError(const std::filesystem::path& log)
     return "see " + log.string();
 }
 
+// What a solver exit code without a summary means (core/Application.hpp).
+std::string failureKind(int code)
+{
+    switch (code)
+    {
+    case 1:
+        return "input error";
+    case 4:
+        return "I/O error";
+    default:
+        return "error (exit code " + std::to_string(code) + ")";
+    }
+}
+
 void copyCase(const std::filesystem::path& from, const std::filesystem::path& to)
 {
     std::filesystem::create_directories(to);
@@ -161,12 +175,15 @@ VariantResult StudyRunner::runVariant(const StudyVariant& variant)
         std::vector<double> rates;
         for (long r = 0; r < study_.repeats; ++r)
         {
-            const int code = runProgram(binDir_ / "sphSolid", solverArgs, dir / "log.sphSolid", {}, nextToStudy);
+            // A run that stops before its summary (an input or I/O error) must not leave the
+            // previous repeat's to be read as its own.
             const std::filesystem::path summary = dir / "postProcessing" / "summary.json";
+            std::filesystem::remove(summary, ec);
+            const int code = runProgram(binDir_ / "sphSolid", solverArgs, dir / "log.sphSolid", {}, nextToStudy);
             if (code == 1 || !std::filesystem::exists(summary))
             {
                 result.status = "failed";
-                result.failure = "input error: " + firstError(dir / "log.sphSolid");
+                result.failure = failureKind(code) + ": " + firstError(dir / "log.sphSolid");
                 break;
             }
             std::ifstream in(summary);

@@ -1,0 +1,18 @@
+#include "core/IoError.hpp"
+
+#include <cstring>
+
+namespace sph
+{
+
+IoError::IoError(const std::filesystem::path& file, const std::string& reason)
+    : std::runtime_error(file.string() + ": cannot write: " + reason)
+{
+}
+
+std::string IoError::reasonFor(int error)
+{
+    return error == 0 ? "unknown reason" : std::strerror(error);
+}
+
+} // namespace sph
