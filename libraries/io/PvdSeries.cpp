@@ -57,6 +57,17 @@ void PvdSeries::keepBefore(double time)
     entries_ = kept;
 }
 
+std::vector<std::string> PvdSeries::keepLast(std::size_t count)
+{
+    std::vector<std::string> dropped;
+    while (entries_.size() > count)
+    {
+        dropped.push_back(entries_.front().file);
+        entries_.erase(entries_.begin());
+    }
+    return dropped;
+}
+
 void PvdSeries::add(double time, const std::string& file)
 {
     entries_.push_back({time, file});

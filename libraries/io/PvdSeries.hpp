@@ -25,6 +25,9 @@ public:
     void load();
     // Keeps only the entries before `time` (a restart writes that time again).
     void keepBefore(double time);
+    // Keeps only the last `count` entries; returns the files of those dropped (the caller
+    // rewrites the series first, then deletes them: the series never names a missing file).
+    std::vector<std::string> keepLast(std::size_t count);
     // Appends an entry and rewrites the file.
     void add(double time, const std::string& file);
     void write() const;

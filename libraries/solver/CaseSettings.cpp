@@ -24,6 +24,10 @@ Schema ControlSettings::schema()
                        "steps")
                  .choices({"adjustableRunTime", "runTime", "timeStep"})
                  .defaultValue("adjustableRunTime"))
+        .add(Key::integer("purgeWrite", "keep only the last N VTK outputs, deleting older ones "
+                                        "(0: keep all)")
+                 .min(0)
+                 .defaultValue("0"))
         .add(Key::word("startFrom", "startTime, or latestTime to restart from the last output")
                  .choices({"startTime", "latestTime"})
                  .defaultValue("startTime"))
@@ -67,6 +71,7 @@ ControlSettings ControlSettings::read(const CaseDictionaries& dicts)
                {"With writeControl timeStep, writeInterval counts steps: e.g. writeInterval "
                 "100; for an interval in seconds use writeControl adjustableRunTime."});
     }
+    settings.purgeWrite = p.integer("purgeWrite");
     settings.startFromLatest = p.word("startFrom") == "latestTime";
     settings.timeStepUpdateInterval = p.integer("timeStepUpdateInterval");
     if (p.has("maxSteps"))

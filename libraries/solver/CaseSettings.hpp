@@ -9,6 +9,7 @@
 //                          | and function-object row time to land on it exactly;      | RunTime
 //                          | runTime: write at the first level at or after it;        |
 //                          | timeStep: every writeInterval steps (OpenFOAM's words)   |
+//   purgeWrite             | keep only the last N VTK outputs (0: keep all)           | 0
 //   startFrom              | startTime, or latestTime to restart from the last output | startTime
 //   timeStepUpdateInterval | steps between recomputing c from the current F (0: keep | 1
 //                          | the initial Δt, as for comparisons with other codes)     |
@@ -50,6 +51,7 @@ struct ControlSettings
     double courant = 0.0;
     double writeInterval = 0.0; // [s], or steps with WriteControl::timeStep
     WriteControl writeControl = WriteControl::adjustableRunTime;
+    long purgeWrite = 0; // keep the last N outputs (0: all)
     bool startFromLatest = false;
     long timeStepUpdateInterval = 1;
     std::optional<long> maxSteps;

@@ -225,6 +225,20 @@ void Simulation<D>::writeOutput(const LevelView& level, const FunctionState& fun
     writeVtu(dicts_.caseDir() / "VTK" / name, data);
     pvd_.add(level.time, name);
     ++outputIndex_;
+    if (control_.purgeWrite > 0)
+    {
+        // purgeWrite N: the series drops its oldest entries first, then their files go.
+        const auto dropped = pvd_.keepLast(static_cast<std::size_t>(control_.purgeWrite));
+        if (!dropped.empty())
+        {
+            pvd_.write();
+            for (const std::string& file : dropped)
+            {
+                std::error_code ec;
+                std::filesystem::remove(dicts_.caseDir() / "VTK" / file, ec);
+            }
+        }
+    }
 }
 
 template <int D>

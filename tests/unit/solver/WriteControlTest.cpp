@@ -6,6 +6,7 @@
 #include "io/VtuFile.hpp"
 #include "solver/SolverCases.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace sph;
@@ -100,4 +101,36 @@ TEST_CASE("writeControl timeStep: an output every writeInterval steps", "[schedu
     CHECK(dt == Approx(2.9586e-7).epsilon(1e-3));
     CHECK(times[2] == Approx(200 * dt).epsilon(1e-12));
     CHECK(times[3] == Approx(300 * dt).epsilon(1e-12));
+}
+
+TEST_CASE("purgeWrite keeps the last N outputs, and a restart continues from them",
+          "[schedule][output]")
+{
+    test::TempDir dir;
+    const auto caseDir = runBar(dir.path(), {"-set", "controlDict.purgeWrite=3"});
+    const auto vtuFiles = [&]
+    {
+        std::vector<std::string> names;
+        for (const auto& file : std::filesystem::directory_iterator(caseDir / "VTK"))
+        {
+            if (file.path().extension() == ".vtu")
+            {
+                names.push_back(file.path().filename().string());
+            }
+        }
+        std::sort(names.begin(), names.end());
+        return names;
+    };
+    CHECK(vtuFiles() == std::vector<std::string>{"dykaBar_10.vtu", "dykaBar_8.vtu", "dykaBar_9.vtu"});
+    auto times = outputTimes(caseDir);
+    REQUIRE(times.size() == 3);
+    CHECK(times.front() == Approx(8e-4).epsilon(1e-12));
+    REQUIRE(test::runSolver(caseDir, {"-set", "endTime=1.2e-3", "-set", "writeInterval=1e-4",
+                                      "-set", "controlDict.purgeWrite=3", "-set",
+                                      "controlDict.startFrom=latestTime"}) == 0);
+    times = outputTimes(caseDir);
+    REQUIRE(times.size() == 3);
+    CHECK(times.front() == Approx(1e-3).epsilon(1e-12));
+    CHECK(times.back() == Approx(1.2e-3).epsilon(1e-12));
+    CHECK(vtuFiles() == std::vector<std::string>{"dykaBar_10.vtu", "dykaBar_11.vtu", "dykaBar_12.vtu"});
 }
