@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <numbers>
+#include <tuple>
 
 using namespace sph;
 
@@ -255,6 +256,43 @@ TEST_CASE("druckerPrager: planeStrain matching reproduces Mohr-Coulomb in plane 
 
 // Objectivity: a rotation of the current configuration rotates P and leaves W, from a
 // committed plastic state; and an unloading step from a yielding state has the elastic slope.
+// The outer cone passes through Mohr–Coulomb's compression meridian (σ1 = σ2 > σ3, tension
+// positive), the inner cone through its extension meridian (σ1 > σ2 = σ3) (§P9; de Souza Neto
+// et al. 2008 §8.2.4). A trial state on a meridian returns along it (the return keeps the
+// deviatoric direction), so the returned principal stresses satisfy Mohr–Coulomb exactly,
+// (σ1 − σ3)/2 = c cos φ − (σ1 + σ3)/2 sin φ; the other cone does not (by hand, at φ = 30°
+// and σ3 = −10 c: Mohr–Coulomb's compression point lies 1.3 c outside the inner cone).
+TEST_CASE("druckerPrager: outer and inner cones are Mohr-Coulomb on the compression and extension meridians",
+          "[plasticity][druckerPrager]")
+{
+    const auto mohrCoulombResidual = [](const Eigen::Vector3d& tau, double phi)
+    {
+        const double s1 = tau.maxCoeff();
+        const double s3 = tau.minCoeff();
+        return (s1 - s3) / 2.0 - (cohesion * std::cos(phi) - (s1 + s3) / 2.0 * std::sin(phi));
+    };
+    for (const double phi : {20.0, 30.0, 40.0})
+    {
+        INFO("phi " << phi);
+        // Compression: two equal larger strains, one much more compressive (yields at these φ).
+        const Eigen::Vector3d compression(1e-2, 1e-2, -6e-2);
+        // Extension: one larger strain, two equal more compressive ones.
+        const Eigen::Vector3d extension(2e-2, -3e-2, -3e-2);
+        for (const auto& [matching, onMeridian, offMeridian] :
+             {std::tuple{"outer", compression, extension}, std::tuple{"inner", extension, compression}})
+        {
+            INFO(matching);
+            test::MaterialPoint<3> on(dpText(phi, 0, cohesion, std::string("coneMatching ") + matching + ";"));
+            const Eigen::Vector3d tau = returnedStress(on, onMeridian);
+            REQUIRE(tau.sum() / 3.0 < 0.0); // on the cone, not at the apex
+            CHECK(std::abs(mohrCoulombResidual(tau, phi * degree)) < 1e-9 * std::abs(tau.minCoeff()));
+            test::MaterialPoint<3> off(dpText(phi, 0, cohesion, std::string("coneMatching ") + matching + ";"));
+            CHECK(std::abs(mohrCoulombResidual(returnedStress(off, offMeridian), phi * degree)) >
+                  0.01 * cohesion);
+        }
+    }
+}
+
 TEST_CASE("druckerPrager: objectivity and elastic unloading", "[plasticity][druckerPrager]")
 {
     SECTION("rotation")
