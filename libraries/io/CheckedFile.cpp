@@ -94,7 +94,10 @@ void CheckedFile::write(std::string_view text)
 
 void CheckedFile::close()
 {
-    syncAndClose(std::exchange(fd_, -1), shownAs_);
+    if (::close(std::exchange(fd_, -1)) != 0)
+    {
+        throw IoError(shownAs_, IoError::reasonFor(errno));
+    }
 }
 
 void syncFile(const std::filesystem::path& path, const std::filesystem::path& shownAs)

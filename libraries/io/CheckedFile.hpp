@@ -1,6 +1,6 @@
 #pragma once
-// Writing a file with every system call checked: write (a short or failed write), fsync and
-// close. Streams and VTK report a full disk late, partly or not at all; a file descriptor says
+// Writing a file with every system call checked: write (a short or failed write), close, and
+// (syncFile) fsync. Streams and VTK report a full disk late, partly or not at all; a file descriptor says
 // which call failed and why (errno), so every output file goes through here (io/AtomicFile for
 // whole files, functionObjects/DatFile for appended tables).
 
@@ -31,7 +31,8 @@ public:
     // Writes all of `text` or nothing: after a failure the file is cut back to its length
     // before the call (a table never keeps half a row), then IoError.
     void write(std::string_view text);
-    // Flushes to the disk and closes; IoError if either fails.
+    // Closes; IoError if that fails (an NFS server reports a failed write only here). The
+    // flush to the disk is writeAtomically's syncFile, once per file.
     void close();
 
 private:
