@@ -3,7 +3,7 @@
 #include "core/Format.hpp"
 #include "core/InputError.hpp"
 #include "initialConditions/generators/Generator.hpp"
-#include "io/VtuFile.hpp"
+#include "io/VtuChecks.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,7 @@
 #include "solver/StateFile.hpp"
 
 #include "core/InputError.hpp"
+#include "io/VtuChecks.hpp"
 
 #include <algorithm>
 #include <array>

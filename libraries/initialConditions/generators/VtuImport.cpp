@@ -6,7 +6,7 @@
 //   spacing     | particle spacing [m] (sets h = hOverDx · spacing)      | required
 //   volumeArray | name of a point array holding the volumes              | optional
 #include "initialConditions/generators/Generator.hpp"
-#include "io/VtuFile.hpp"
+#include "io/VtuChecks.hpp"
 
 #include <cmath>
 
