@@ -1,0 +1,109 @@
+// gradF with a material that has plastic history (docs/theory/plasticity.md §P7): the stress
+// samples around a particle evaluated from their own committed states (or, `plasticSamples
+// linearised`, from the particle's with the return's tangent), and the commit of those states.
+// The rest of the scheme, for every material, is GradF.cpp.
+#include "stabilisation/gradF/GradF.hpp"
+
+#include <stdexcept>
+
+namespace sph
+{
+
+template <int D>
+void GradF<D>::evaluateSamples(std::size_t a, const Material<D>& material, const NeighbourList& list,
+                               std::size_t count, double* psi, Scratch& scratch, bool pending)
+{
+    if (!(linearised_ && material.hasHistory()))
+    {
+        material.evaluate(scratch.F.data(), scratch.P.data(), psi, count,
+                          historyAround(a, material, list, pending ? &scratch : nullptr));
+        return;
+    }
+    // Evaluation 2: P_tr(F_b) + dP_a + A_a : (F_b − F_a), W_tr(F_b) + dW_a + dP_a : (F_b − F_a).
+    material.evaluate(scratch.F.data(), scratch.P.data(), psi, count, HistoryOf::trialOf(a));
+    const PlasticCorrection<D> c = material.plasticCorrection(scratch.F[0], a);
+    if (!c.flowing)
+    {
+        return;
+    }
+    for (std::size_t j = 0; j < count; ++j)
+    {
+        const Mat<D> dF = scratch.F[j] - scratch.F[0];
+        const Eigen::Matrix<double, D * D, 1> dFv = Eigen::Map<const Eigen::Matrix<double, D * D, 1>>(
+            Mat<D>(dF.transpose()).data());
+        const Eigen::Matrix<double, D * D, 1> dPv = c.A * dFv; // row-major components
+        Mat<D> dP;
+        for (int i = 0; i < D * D; ++i)
+        {
+            dP(i / D, i % D) = dPv[i];
+        }
+        scratch.P[j] += c.dP + dP;
+        if (psi)
+        {
+            psi[j] += c.dW + (c.dP.array() * dF.array()).sum();
+        }
+    }
+}
+
+template <int D>
+HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
+                                  const NeighbourList& list, Scratch* scratch)
+{
+    if (!material.hasHistory())
+    {
+        return HistoryOf::particles(a); // unused
+    }
+    if (!samples_.active())
+    {
+        throw std::logic_error("gradF: a material with history, but declareHistory() was not "
+                               "called");
+    }
+    const std::size_t k = list.begin(a);
+    return scratch ? HistoryOf::samples(samples_.committed(k), samples_.stride(),
+                                        samples_.next(k), scratch->dissipation.data())
+                   : HistoryOf::samples(samples_.committed(k), samples_.stride());
+}
+
+// The particles' own states (each = its sample a–a: F_a(a) = F_a) for display and as the
+// start of new pairs, then the samples' states; the dissipation is that of the samples.
+template <int D>
+double GradF<D>::commitHistory(const HistoryCommit<D>& in)
+{
+    if (linearised_)
+    {
+        return commitParticleHistory(in); // one state per particle, committed at F_a
+    }
+    commitParticleHistory(in);
+    samples_.commit();
+    double total = 0.0;
+    for (std::size_t b = 0; b < in.bodies.size(); ++b)
+    {
+        if (in.materials[b])
+        {
+            for (std::size_t a = in.bodies[b].begin; a < in.bodies[b].end; ++a)
+            {
+                total += sampleDissipation_[a];
+            }
+        }
+    }
+    return total;
+}
+
+// GradF<D> is instantiated in GradF.cpp; these are its members defined here.
+template void GradF<1>::evaluateSamples(std::size_t, const Material<1>&, const NeighbourList&,
+                                         std::size_t, double*, Scratch&, bool);
+template HistoryOf GradF<1>::historyAround(std::size_t, const Material<1>&, const NeighbourList&,
+                                          Scratch*);
+template double GradF<1>::commitHistory(const HistoryCommit<1>&);
+template void GradF<2>::evaluateSamples(std::size_t, const Material<2>&, const NeighbourList&,
+                                         std::size_t, double*, Scratch&, bool);
+template HistoryOf GradF<2>::historyAround(std::size_t, const Material<2>&, const NeighbourList&,
+                                          Scratch*);
+template double GradF<2>::commitHistory(const HistoryCommit<2>&);
+template void GradF<3>::evaluateSamples(std::size_t, const Material<3>&, const NeighbourList&,
+                                         std::size_t, double*, Scratch&, bool);
+template HistoryOf GradF<3>::historyAround(std::size_t, const Material<3>&, const NeighbourList&,
+                                          Scratch*);
+template double GradF<3>::commitHistory(const HistoryCommit<3>&);
+
+} // namespace sph
