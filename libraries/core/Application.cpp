@@ -36,7 +36,8 @@ int guardedMain(const std::function<int()>& body)
                   << error.what()
                   << "\nThe files written before are intact: make room on the disk, raise the "
                      "file-size limit or make the folder writable, and run again; a solver run "
-                     "continues with 'startFrom latestTime;'.\n"
+                     "continues with 'startFrom latestTime;', a study keeps its finished "
+                     "variants.\n"
                   << std::flush;
         return 4;
     }

@@ -10,6 +10,10 @@ IoError::IoError(const std::filesystem::path& file, const std::string& reason)
 {
 }
 
+IoError::IoError(const std::string& message) : std::runtime_error(message)
+{
+}
+
 std::string IoError::reasonFor(int error)
 {
     return error == 0 ? "unknown reason" : std::strerror(error);

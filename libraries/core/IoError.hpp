@@ -19,6 +19,10 @@ public:
     // what(): "<file>: cannot write: <reason>"
     IoError(const std::filesystem::path& file, const std::string& reason);
 
+    // what(): `message` as it is, for an I/O error another program reported (sphStudy passes
+    // on its solver's).
+    explicit IoError(const std::string& message);
+
     // The reason for the error number `error` (errno), as strerror gives it.
     static std::string reasonFor(int error);
 };

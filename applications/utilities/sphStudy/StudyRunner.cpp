@@ -2,6 +2,7 @@
 #include "StudyMetric.hpp"
 
 #include "core/InputError.hpp"
+#include "core/IoError.hpp"
 #include "core/Process.hpp"
 #include "core/Statistics.hpp"
 #include "io/AtomicFile.hpp"
@@ -50,8 +51,6 @@ std::string failureKind(int code)
     {
     case 1:
         return "input error";
-    case 4:
-        return "I/O error";
     default:
         return "error (exit code " + std::to_string(code) + ")";
     }
@@ -66,6 +65,19 @@ void copyCase(const std::filesystem::path& from, const std::filesystem::path& to
     }
     std::error_code ec;
     std::filesystem::remove(to / "constant" / "particles.vtu", ec);
+}
+
+// An I/O error (exit 4: a full disk, a file-size limit) is not a property of the variant: the
+// study stops with it, as the next variants would meet the same disk, and records nothing for
+// the variant, so that running the study again (with room on the disk) runs it.
+void stopOnIoError(int code, const std::string& program, const std::string& variant,
+                   const std::filesystem::path& log)
+{
+    if (code == 4)
+    {
+        throw IoError(firstError(log) + "\n(" + program + " of the variant " + variant +
+                      ", its log: " + log.string() + ")");
+    }
 }
 
 } // namespace
@@ -87,6 +99,7 @@ std::vector<VariantResult> StudyRunner::run()
     const auto variants = study_.variants();
     std::vector<VariantResult> results;
     const auto start = std::chrono::steady_clock::now();
+    removeStaleTemporaries(studyDir_); // of a study killed while writing (io/AtomicFile)
     for (std::size_t i = 0; i < variants.size(); ++i)
     {
         std::cout << "[" << i + 1 << "/" << variants.size() << "] " << variants[i].name << ": "
@@ -153,7 +166,10 @@ VariantResult StudyRunner::runVariant(const StudyVariant& variant)
         args.push_back("-set");
         args.push_back(set);
     }
-    if (runProgram(binDir_ / "sphParticles", args, dir / "log.sphParticles", {}, nextToStudy) != 0)
+    const int particlesCode =
+        runProgram(binDir_ / "sphParticles", args, dir / "log.sphParticles", {}, nextToStudy);
+    stopOnIoError(particlesCode, "sphParticles", variant.name, dir / "log.sphParticles");
+    if (particlesCode != 0)
     {
         result.status = "failed";
         result.failure = "sphParticles: " + firstError(dir / "log.sphParticles");
@@ -180,6 +196,7 @@ VariantResult StudyRunner::runVariant(const StudyVariant& variant)
             const std::filesystem::path summary = dir / "postProcessing" / "summary.json";
             std::filesystem::remove(summary, ec);
             const int code = runProgram(binDir_ / "sphSolid", solverArgs, dir / "log.sphSolid", {}, nextToStudy);
+            stopOnIoError(code, "sphSolid", variant.name, dir / "log.sphSolid");
             if (code == 1 || !std::filesystem::exists(summary))
             {
                 result.status = "failed";

@@ -212,3 +212,39 @@ TEST_CASE("the temporaries a killed run left are removed when the run starts aga
         CHECK(std::filesystem::exists(file));
     }
 }
+
+TEST_CASE("sphStudy stops with the I/O error of a variant and runs it again when resumed",
+          "[output][diskFull][study]")
+{
+    test::TempDir dir;
+    const auto caseDir = writeOutputOnlyCase(dir.path() / "block");
+    std::ofstream(caseDir / "system" / "studyDict")
+        << "axes { courant { c2 { solver (\"courant=0.2\"); } c3 { solver (\"courant=0.3\"); } } }\n"
+           "threads 1;\nmetrics { energyDrift { type summary; value steps; } }\n";
+    const auto study = caseDir / "postProcessing" / "study";
+    const auto staleTemporary = study / ".results.csv.tmp999999999"; // of a killed study
+    std::filesystem::create_directories(study);
+    std::ofstream(staleTemporary) << "a,b";
+
+    // Room for the copied case, the particle file and the logs, not for the solver's output.
+    const std::uintmax_t particles = std::filesystem::file_size(caseDir / "constant" / "particles.vtu");
+    std::string output;
+    int status = 0;
+    {
+        const FileSizeLimit fileSize(particles + 64);
+        status = test::runProcess("sphStudy", {"-case", caseDir.string()}, &output);
+    }
+    INFO(output);
+    CHECK(status == 4);
+    CHECK_THAT(output, Catch::Contains("FATAL I/O ERROR"));
+    CHECK_THAT(output, Catch::Contains("c2_0.vtu: cannot write: File too large"));
+    CHECK_THAT(output, Catch::Contains("sphSolid of the variant c2"));
+    CHECK_THAT(output, !Catch::Contains("[2/2]")); // the next variant would meet the same disk
+    CHECK(!std::filesystem::exists(study / "runs" / "c2" / "study.json"));
+    CHECK(!std::filesystem::exists(staleTemporary));
+
+    output.clear();
+    REQUIRE(test::runProcess("sphStudy", {"-case", caseDir.string()}, &output) == 0);
+    CHECK_THAT(output, Catch::Contains("[1/2] c2: finished"));
+    CHECK_THAT(output, Catch::Contains("[2/2] c3: finished"));
+}
