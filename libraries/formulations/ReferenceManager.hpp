@@ -102,17 +102,27 @@ public:
     }
 
 private:
+    // A singular neighbourhood is an input error in the initial configuration (an isolated
+    // particle, a body thinner than the kernel can see: setup reports it). Once the reference
+    // has moved it is the material's doing (a particle that separated, a layer one particle
+    // thick) and the corrected gradients are regularised there (particles/CorrectedGradient.hpp).
     ForceStatus rebuild(const std::vector<int>& body)
     {
+        const bool moved = ref_.updateStep > 0;
         const ReferenceNeeds needs = scheme_.referenceNeeds(kernel_);
         const long bad = ref_.rebuild(kernel_, body, needs.searchRadius,
                                       formulation_.updatesReference(), needs.kernelValues);
-        if (bad >= 0)
+        if (bad >= 0 && !moved)
         {
             return ForceStatus::failed(FailureKind::singularReference, bad, 0.0,
                                        "corrected-gradient matrix M (too few neighbours in x^r)");
         }
-        return scheme_.prepare(ref_);
+        const ForceStatus status = scheme_.prepare(ref_);
+        if (moved && !status.ok() && status.failure == FailureKind::singularReference)
+        {
+            return {};
+        }
+        return status;
     }
 
     const Formulation<D>& formulation_;

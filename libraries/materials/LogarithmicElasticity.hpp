@@ -95,6 +95,13 @@ struct HenckyLaw
         return 2.0 * mu * (eps - Eigen::Vector3d::Constant(ev / 3.0)) +
                Eigen::Vector3d::Constant(K * ev);
     }
+    // The inverse of kirchhoff(): ε = dev τ/(2μ) + tr τ/(9K) (1 1 1).
+    Eigen::Vector3d strainOf(const Eigen::Vector3d& tau) const
+    {
+        const double mean = tau.sum() / 3.0;
+        return (tau - Eigen::Vector3d::Constant(mean)) / (2.0 * mu) +
+               Eigen::Vector3d::Constant(mean / (3.0 * K));
+    }
     double energy(const Eigen::Vector3d& eps) const
     {
         const double ev = eps.sum();

@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -137,6 +138,28 @@ public:
         (void)n;
         return 0.0;
     }
+
+    // An initial stress (a body at rest under gravity, a pre-stressed part): sets particle a's
+    // committed state so that its Cauchy stress at F = I is sigma (3×3 always: in 2D plane
+    // strain the zz component is the out-of-plane stress; in 1D only xx is used). Only a
+    // material whose history holds its stress-free configuration can (the plastic ones: an
+    // initial elastic strain in Cp⁻¹); a stress outside the yield surface is refused.
+    enum class InitialStress
+    {
+        set,
+        notSupported,
+        outsideYieldSurface
+    };
+    virtual InitialStress startFromStress(std::size_t a, const Eigen::Matrix3d& sigma)
+    {
+        (void)a;
+        (void)sigma;
+        return InitialStress::notSupported;
+    }
+    // K0 = σ_horizontal/σ_vertical of the material at rest under its own weight with no
+    // lateral strain: ν/(1 − ν) for an elastic solid; a frictional material gives its own
+    // (Jaky's 1 − sin φ). NaN when the material has no such coefficient.
+    virtual double atRestCoefficient() const { return std::numeric_limits<double>::quiet_NaN(); }
 
     static Schema commonSchema()
     {

@@ -34,6 +34,10 @@ Schema bodySchema()
                  .optional())
         .add(Key::dict("constraints", "fixed particles by region: name { type fixed; region { "
                                       "... }; }")
+                 .optional())
+        .add(Key::dict("initialStress", "the stress at t = 0 { type geostatic; ... } (plastic "
+                                        "materials: stored as an initial elastic strain)")
+                 .selects("stressField")
                  .optional());
 }
 
@@ -173,6 +177,43 @@ void Simulation<D>::loadParticles(const InitialParticles& initial)
 }
 
 template <int D>
+void Simulation<D>::setInitialStress(const Dictionary& dict, std::size_t b)
+{
+    Material<D>& material = *materialModels_[b];
+    const BodyRange& range = particles_.bodies[b];
+    const auto field = selectModel<StressField<D>>(
+        dict,
+        {gravity_, material.density(), material.atRestCoefficient(), &particles_.X,
+         &particles_.V0, range.begin, range.end},
+        D);
+    for (std::size_t a = range.begin; a < range.end; ++a)
+    {
+        const Eigen::Matrix3d sigma = field->stress(a);
+        switch (material.startFromStress(a, sigma))
+        {
+        case Material<D>::InitialStress::set:
+            break;
+        case Material<D>::InitialStress::notSupported:
+            throw InputError(dict.location(),
+                             "body '" + bodyNames_[b] + "': its material cannot start from a "
+                             "stress (it keeps no history to hold an initial elastic strain)",
+                             {"Plastic materials can: hencky's plastic counterparts j2Plasticity "
+                              "and druckerPrager (a large yieldStress or cohesion keeps them "
+                              "elastic)."});
+        case Material<D>::InitialStress::outsideYieldSurface:
+            throw InputError(dict.location(),
+                             "body '" + bodyNames_[b] + "': the initial stress at " +
+                                 particleName(a) + " is outside the material's yield surface "
+                                 "(sigma_xx " + formatNumber(sigma(0, 0)) + ", sigma_yy " +
+                                 formatNumber(sigma(1 % 3, 1 % 3)) + ", sigma_zz " +
+                                 formatNumber(sigma(2, 2)) + " Pa)",
+                             {"For geostatic: a K0 nearer 1 (the default 1 - sin(phi) of "
+                              "druckerPrager is inside its cone)."});
+        }
+    }
+}
+
+template <int D>
 void Simulation<D>::setupBodies(const Dictionary& bodies)
 {
     // Every body of the particle file needs a dictionary here, and vice versa.
@@ -224,6 +265,10 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
         materials_.push_back(materialModels_.back().get());
         historyMaterials_ = historyMaterials_ || materials_.back()->hasHistory();
         const BodyRange& range = particles_.bodies[b];
+        if (p.has("initialStress"))
+        {
+            setInitialStress(p.dict("initialStress"), b);
+        }
         const Vec<D> velocity = toVec<D>(p.vector("velocity"));
         for (std::size_t a = range.begin; a < range.end; ++a)
         {

@@ -1,14 +1,15 @@
+#include <iostream>
 #pragma once
 // Building blocks shared by the CSPH schemes (spec §2-§4):
 //
-//   f_a = Σ_b x_b ⊗ g_a(b) = [Σ_{b≠a} V_b x_ba ⊗ d_ab] L_a^T            (eq. 9, spec §2)
+//   f_a = Σ_b x_b ⊗ g_a(b) = [Σ_{b≠a} V_b x_ba ⊗ d_ab] L_a^T (+ C_a)    (eq. 9, spec §2)
 //   T_c = -Σ_a U_a g_a(c),  U_a = V0_a P_a F^r_a^T                       (spec §4)
 //       = -V_c Σ_{a≠c} (U_a L_a) d_ac - (U_c L_c) e_c                     (gather form)
 //
 // where d_ab is the gradient used for the pair. `GradientSet` supplies it:
 //   outgoing(a, k)  d_ab for slot k of a's list (pair a -> b)
 //   incoming(a, k)  d_ba for slot k of a's list (the gradient b's operator uses for a)
-//   L(a), e(a)   the corrected-gradient data.
+//   L(a), e(a)   the corrected-gradient data; gradient() all of it (f_a with C_a).
 // For the standard kernel gradient incoming(k) = -outgoing(k) (the kernel gradient is odd);
 // the `vidal` scheme supplies shifted gradients instead.
 
@@ -31,6 +32,7 @@ struct StandardGradients
     Vec<D> incoming(std::size_t a, std::size_t k) const { return -ref.gradW(a, k); }
     const Mat<D>& L(std::size_t a) const { return ref.gradient.L[a]; }
     const Vec<D>& e(std::size_t a) const { return ref.gradient.e[a]; }
+    const CorrectedGradient<D>& gradient() const { return ref.gradient; }
 };
 
 // f_a at positions x.
@@ -46,7 +48,7 @@ Mat<D> incrementalGradient(std::size_t a, const std::vector<Vec<D>>& x,
         const std::size_t b = list.indices[k];
         sum.noalias() += (ref.V[b] * (x[b] - xa)) * gradients.outgoing(a, k).transpose();
     }
-    return sum * gradients.L(a).transpose();
+    return gradients.gradient().deformation(a, sum); // + C_a for a deficient support
 }
 
 // T_c = -V_c Σ_{a≠c} UL_a d_ac - UL_c e_c with UL_a = U_a L_a (spec §4 in gather form).
@@ -251,6 +253,8 @@ public:
         }
         ForceStatus status = combine(tallies);
         checkForces<D>(out.T, status);
+        if (!status.ok() && status.failure == FailureKind::nonFiniteForce) { auto c = status.badParticle; const auto& list = in.ref.neighbours;
+            for (std::size_t k = list.begin(c); k < list.end(c); ++k) { auto b = list.indices[k]; std::cerr << "DBG " << b << " F " << out.F[b].reshaped().transpose() << " P " << out.P[b].reshaped().transpose() << " L " << gradients.L(b).reshaped().transpose() << " Fr " << in.ref.F[b].reshaped().transpose() << "\n"; } }
         return status;
     }
 

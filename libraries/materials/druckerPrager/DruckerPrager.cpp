@@ -85,6 +85,7 @@ DruckerPrager<D>::DruckerPrager(const Params& params, const typename Material<D>
                     {"Use a value in [0, " + formatNumber(phi) + "]; 0 (no plastic volume "
                      "change) is usual for soils, " + formatNumber(phi) + " is associative."});
     }
+    atRest_ = 1.0 - std::sin(phi * degree);
     const ConeMatching::Kind kind = ConeMatching::parse(params.word("coneMatching"));
     eta_ = ConeMatching::eta(kind, phi * degree);
     xi_ = ConeMatching::xi(kind, phi * degree);

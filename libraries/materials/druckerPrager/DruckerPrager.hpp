@@ -62,6 +62,8 @@ public:
     double dissipated(double V0, const Flow& flow) const { return V0 * flow.dissipation; }
 
     double apexPressure() const { return apexPressure_; }
+    // Jaky's K0 = 1 − sin φ for a frictional material at rest (§P10).
+    double atRestCoefficient() const override { return atRest_; }
 
 private:
     double eta_;          // η
@@ -70,6 +72,7 @@ private:
     double cohesion_;     // c
     double apexPressure_; // ξ c/η
     double tensileStrength_;
+    double atRest_; // 1 − sin φ
 };
 
 } // namespace sph

@@ -66,6 +66,13 @@ public:
     double commit(const Mat<D>* F, const double* V0, std::size_t first, std::size_t n) override;
     State state(std::size_t a) const { return history_.state(a); }
 
+    // An initial elastic strain: Cp⁻¹ = be = exp(2 εe) with εe = Hencky's inverse of sigma
+    // (τ = σ at F = I), α = 0 (docs/theory/plasticity.md §P10).
+    typename Material<D>::InitialStress startFromStress(std::size_t a,
+                                                       const Eigen::Matrix3d& sigma) override;
+    // ν/(1 − ν): no lateral strain, elastic (a model with friction overrides it).
+    double atRestCoefficient() const override { return elastic_.nu / (1.0 - elastic_.nu); }
+
     std::size_t historyComponents() const override { return State::packedSize; }
     void packHistory(std::size_t a, double* out) const override { state(a).pack(out); }
 
@@ -266,6 +273,36 @@ double ReturnMapPlasticity<D, Model>::maxWaveSpeed(const Mat<D>* F, std::size_t 
         c = std::max(c, waveSpeedOf(F[i], state(first + i)));
     }
     return c;
+}
+
+template <int D, class Model>
+typename Material<D>::InitialStress
+ReturnMapPlasticity<D, Model>::startFromStress(std::size_t a, const Eigen::Matrix3d& sigma)
+{
+    State s;
+    if constexpr (D == 1)
+    {
+        s.inversePlastic(0, 0) = std::exp(2.0 * sigma(0, 0) / elastic_.E);
+    }
+    else
+    {
+        // Principal axes of the stress (in 2D: of its in-plane block; zz is one of them).
+        const Mat<D> inPlane = sigma.template topLeftCorner<D, D>();
+        const Eigen::SelfAdjointEigenSolver<Mat<D>> axes(inPlane);
+        Eigen::Vector3d tau = Eigen::Vector3d::Constant(sigma(2, 2));
+        tau.template head<D>() = axes.eigenvalues();
+        const Eigen::Vector3d eps = law_.strainOf(tau);
+        const Vec<D> stretch = (2.0 * eps.template head<D>()).array().exp();
+        s.inversePlastic = axes.eigenvectors() * stretch.asDiagonal() * axes.eigenvectors().transpose();
+        s.inversePlastic = 0.5 * (s.inversePlastic + s.inversePlastic.transpose());
+        s.inversePlasticZZ = D == 2 ? std::exp(2.0 * eps[2]) : 1.0;
+    }
+    if (returnMap(Mat<D>::Identity(), s, false).flow.deltaGamma > 0.0)
+    {
+        return Material<D>::InitialStress::outsideYieldSurface;
+    }
+    history_.store(a, s);
+    return Material<D>::InitialStress::set;
 }
 
 template <int D, class Model>

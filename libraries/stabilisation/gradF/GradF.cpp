@@ -2,6 +2,9 @@
 #include "stabilisation/gradF/GradF.hpp"
 #include "stabilisation/gradF/MonomialTensors.hpp"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -32,6 +35,33 @@ template <int D>
 GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
     : linearised_(params.word("plasticSamples") == "linearised")
 {
+}
+
+// Z^{-1}, with the eigenvalues of Z/scale (mean 1) raised to at least smallestEigenvalue: a
+// neighbourhood that no longer spans the curvatures (a particle with few neighbours, a chain
+// of particles: granular flows make them once the reference moves) would otherwise turn
+// offsets of round-off size into a huge H_a. Directions no neighbour sees (eigenvalue 0)
+// contribute nothing either way: the right-hand side has no component along them.
+// Well-conditioned Z (every regular cloud: ≈ 0.25 inside a body, ≥ 0.08 at corners in 2D)
+// take Z.inverse() as before, to the bit; Z = 0 (no neighbour) gives H_a = 0.
+template <int D>
+typename GradF<D>::MatM GradF<D>::regularisedInverse(const MatM& Z, double scale)
+{
+    if (!(scale > 0.0) || !Z.allFinite())
+    {
+        return MatM::Zero();
+    }
+    const MatM normalised = Z / scale;
+    // Cholesky of Z/scale - s I succeeds exactly when every eigenvalue exceeds s.
+    if (Eigen::LLT<MatM>(normalised - smallestEigenvalue * MatM::Identity()).info() ==
+        Eigen::Success)
+    {
+        return Z.inverse();
+    }
+    const Eigen::SelfAdjointEigenSolver<MatM> eigen(normalised);
+    const MonomialVec<D> raised =
+        eigen.eigenvalues().cwiseMax(smallestEigenvalue).cwiseInverse() / scale;
+    return eigen.eigenvectors() * raised.asDiagonal() * eigen.eigenvectors().transpose();
 }
 
 template <int D>
@@ -73,12 +103,8 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
         if (!(scale > 0.0) || !(det > 1.0e-12) || !std::isfinite(det))
         {
             singular = std::max<long>(singular, static_cast<long>(n - a));
-            Zinv_[a].setZero();
         }
-        else
-        {
-            Zinv_[a] = Z.inverse();
-        }
+        Zinv_[a] = regularisedInverse(Z, scale);
         s_[a] = s;
         Y_[a] = Y;
     }
@@ -144,7 +170,7 @@ typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vec
         moment.noalias() -= (ref.V[b] * ref.dWdrOverR[k] * xba) * xr.transpose(); // ∇W_ab = -W'/r x^r_ba
         Rx.noalias() += (w * xba) * monomials<D>(xr).transpose();
     }
-    kin.f = moment * ref.gradient.L[a].transpose();
+    kin.f = ref.gradient.deformation(a, moment);
     kin.F = kin.f * ref.F[a];
     // Least squares for ½H: c_a = [Σ_b Ŵ_ab y_ab z_ab^T] Z_a^{-1}.
     const MatDM c = (Rx - kin.f * Y_[a].transpose()) * Zinv_[a];
@@ -177,7 +203,7 @@ Mat<D> GradF<D>::deformationGradient(std::size_t a, const std::vector<Vec<D>>& x
         const Vec<D> xba = x[b] - xa;
         moment.noalias() -= (ref.V[b] * ref.dWdrOverR[k] * xba) * xr.transpose();
     }
-    const Mat<D> f = moment * ref.gradient.L[a].transpose();
+    const Mat<D> f = ref.gradient.deformation(a, moment);
     return f * ref.F[a];
 }
 

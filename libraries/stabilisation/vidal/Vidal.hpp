@@ -34,6 +34,7 @@ struct ShiftedGradients
     const Vec<D>& incoming(std::size_t, std::size_t k) const { return in[k]; }
     const Mat<D>& L(std::size_t a) const { return corrected.L[a]; }
     const Vec<D>& e(std::size_t a) const { return corrected.e[a]; }
+    const CorrectedGradient<D>& gradient() const { return corrected; }
 };
 
 template <int D>

@@ -61,6 +61,7 @@ const std::map<std::string, std::map<int, Names>>& expected()
         {"velocityField",
          {{1, {"uniform"}}, {2, {"cantileverMode", "rotation", "uniform"}},
           {3, {"cantileverMode", "rotation", "twist", "uniform"}}}},
+        {"stressField", {{1, {"geostatic"}}, {2, {"geostatic"}}, {3, {"geostatic"}}}},
         {"displacementField",
          {{1, {"affine", "checkerboard", "random"}},
           {2, {"affine", "checkerboard", "random"}},
