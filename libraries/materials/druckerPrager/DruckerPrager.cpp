@@ -109,50 +109,31 @@ PlasticFlow DruckerPrager<D>::returnPrincipal(Eigen::Vector3d& eps, double alpha
     const double K = this->law_.K;
     const double mu = this->law_.mu;
     const double ev = eps.sum();
+    const double opening = tensileStrength_ / K; // εt: beyond it the voids open (P9.5)
     const Eigen::Vector3d dev = eps - Eigen::Vector3d::Constant(ev / 3.0);
-    const double pTrial = K * ev;
     const double rootJ2Trial = std::sqrt(2.0) * mu * dev.norm(); // √J2 = |s|/√2, s = 2μ dev ε
-    const double phiTrial = rootJ2Trial + eta_ * pTrial - xi_ * cohesion_;
-    if (!(phiTrial > 0.0) && !(pTrial > tensileStrength_))
+    const double phiTrial = rootJ2Trial + eta_ * std::min(K * ev, tensileStrength_) - xi_ * cohesion_;
+    if (!(phiTrial > 0.0))
     {
         return {};
     }
-    double deltaGamma = 0.0;
-    double shearScale = 0.0; // s = shearScale s_tr
-    double evReturned = 0.0;
-    bool onCone = false;
-    if (phiTrial > 0.0)
+    // (P9.3) On the capped branch p = σt does not change with εv: the cone alone returns s;
+    // accepted while the dilatancy keeps εv ≥ εt. Else (or from εv_tr ≤ εt) the linear branch.
+    double deltaGamma = phiTrial / mu;
+    double evReturned = ev - etaBar_ * deltaGamma;
+    if (!(ev > opening && evReturned >= opening))
     {
-        // 1. The smooth cone (P9.3), accepted if it did not pass the apex nor the cut-off.
-        deltaGamma = phiTrial / (mu + K * eta_ * etaBar_);
-        shearScale = 1.0 - mu * deltaGamma / rootJ2Trial;
-        evReturned = ev - etaBar_ * deltaGamma; // exactly ev when ψ = 0
-        onCone = shearScale >= 0.0 && K * evReturned <= tensileStrength_;
+        deltaGamma = (rootJ2Trial + eta_ * K * ev - xi_ * cohesion_) / (mu + K * eta_ * etaBar_);
+        evReturned = ev - etaBar_ * deltaGamma;
     }
-    if (!onCone)
-    {
-        // 2. The cut-off p = σt: alone while the trial shear fits under the cone there, else
-        // the edge where both meet (the apex when σt = ξ c/η).
-        const double largest = std::max(xi_ * cohesion_ - eta_ * tensileStrength_, 0.0);
-        const double cutOff = (pTrial - tensileStrength_) / K; // Δγ₂ with the cut-off alone
-        evReturned = tensileStrength_ / K;
-        if (rootJ2Trial <= largest)
-        {
-            shearScale = 1.0;
-            deltaGamma = cutOff;
-        }
-        else
-        {
-            shearScale = largest / rootJ2Trial;
-            const double cone = (rootJ2Trial - largest) / mu; // Δγ₁
-            deltaGamma = cone + std::max(cutOff - etaBar_ * cone, 0.0);
-        }
-    }
+    // √J2 = ξc − η p ≥ 0 after the return, since p ≤ σt ≤ ξ c/η.
+    const double shearScale = std::max(1.0 - mu * deltaGamma / rootJ2Trial, 0.0);
     const Eigen::Vector3d devReturned = shearScale * dev;
     eps = devReturned + Eigen::Vector3d::Constant(evReturned / 3.0);
     // τ:Δεp = s:Δe + p Δεv (P9.4), and α += √(2/3)|dev Δεp|.
     const Eigen::Vector3d plasticDev = dev - devReturned;
-    const double work = 2.0 * mu * devReturned.dot(plasticDev) + K * evReturned * (ev - evReturned);
+    const double p = std::min(K * evReturned, tensileStrength_);
+    const double work = 2.0 * mu * devReturned.dot(plasticDev) + p * (ev - evReturned);
     return {deltaGamma, alpha + std::sqrt(2.0 / 3.0) * plasticDev.norm(), work};
 }
 

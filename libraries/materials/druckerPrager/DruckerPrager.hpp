@@ -5,11 +5,13 @@
 // of that is ReturnMapPlasticity's); the return in principal log strains is its own:
 //
 //   p = tr τ/3 (tension > 0), √J2 = |dev τ|/√2,
-//   Φ = √J2 + η p − ξ c,   G = √J2 + η̄ p,   p ≤ σt                        (P9.1)
-//   smooth cone: Δγ = Φ_tr/(μ + K η η̄), s = (1 − μΔγ/√J2_tr) s_tr,
-//                p = p_tr − K η̄ Δγ   while √J2 ≥ 0 and p ≤ σt;             (P9.3)
-//   else the cut-off: p = σt, √J2 = min(√J2_tr, ξ c − η σt) (with the default
-//   σt = ξ c/η: the apex, s = 0).
+//   Φ = √J2 + η p − ξ c,   G = √J2 + η̄ p                                  (P9.1)
+//   the tension cut-off is in the elastic law: p = min(K εv, σt) (P9.5), so volumetric
+//   strain beyond εt = σt/K opens voids that close again without stress (granular matter
+//   pulled apart, then pressed together);
+//   cone: Δγ = Φ_tr/(μ + K η η̄), s = (1 − μΔγ/√J2_tr) s_tr, εv = εv_tr − η̄ Δγ while
+//   εv ≤ εt; Δγ = Φ_tr/μ at p = σt while εv ≥ εt (P9.3) (with the default σt = ξ c/η the
+//   capped branch is the apex: s = 0).
 //
 // η, ξ from φ and η̄ from ψ by the cone's matching to Mohr–Coulomb (planeStrain: Bui et al.
 // 2008; outer/inner: de Souza Neto et al. 2008 §8.2.4). ψ = 0: no plastic volume change on
@@ -58,6 +60,25 @@ public:
     // The model's part of ReturnMapPlasticity (§P9): the cone/cut-off return in principal log
     // strains, W − Ψ(εe) = τ:Δεp, and the commit's V0 τ:Δεp.
     Flow returnPrincipal(Eigen::Vector3d& eps, double alpha) const;
+    // The elastic law with the tension cut-off in it (P9.5): Hencky's, but the volumetric
+    // stress p = min(K εv, σt): strain beyond σt/K opens voids that close again without
+    // stress.
+    Eigen::Vector3d kirchhoffOf(const Eigen::Vector3d& eps) const
+    {
+        const double ev = eps.sum();
+        return 2.0 * this->law_.mu * (eps - Eigen::Vector3d::Constant(ev / 3.0)) +
+               Eigen::Vector3d::Constant(std::min(this->law_.K * ev, tensileStrength_));
+    }
+    double elasticEnergyOf(const Eigen::Vector3d& eps) const
+    {
+        const double K = this->law_.K;
+        const double ev = eps.sum();
+        const double opening = tensileStrength_ / K; // εt
+        const double volumetric = ev <= opening ? 0.5 * K * ev * ev
+                                                : tensileStrength_ * (ev - 0.5 * opening);
+        const Eigen::Vector3d dev = eps - Eigen::Vector3d::Constant(ev / 3.0);
+        return this->law_.mu * dev.squaredNorm() + volumetric;
+    }
     double extraEnergy(const Flow& flow) const { return flow.dissipation; }
     double dissipated(double V0, const Flow& flow) const { return V0 * flow.dissipation; }
 

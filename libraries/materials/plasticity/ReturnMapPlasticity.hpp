@@ -14,6 +14,9 @@
 //   double extraEnergy(const Flow& flow) const;   W − Ψ(εe) when the point has flowed (now or
 //       before): the stored hardening energy plus the step's dissipation
 //   double dissipated(double V0, const Flow& flow) const;  what a commit books, V0 ΔD
+//   optional: Eigen::Vector3d kirchhoffOf(eps), double elasticEnergyOf(eps): an elastic law
+//       of the model's own in place of Hencky's (druckerPrager: no volumetric stress beyond
+//       its tensile strength, §P9)
 //
 // Without plastic flow (now or before) the energy and the stress are `hencky`'s to the bit.
 
@@ -84,6 +87,29 @@ protected:
 
 private:
     const Model& model() const { return static_cast<const Model&>(*this); }
+    // The elastic law on the principal log strains: the model's own, else Hencky's (P2.2).
+    Eigen::Vector3d kirchhoff(const Eigen::Vector3d& eps) const
+    {
+        if constexpr (requires(const Model& m) { m.kirchhoffOf(eps); })
+        {
+            return model().kirchhoffOf(eps);
+        }
+        else
+        {
+            return law_.kirchhoff(eps);
+        }
+    }
+    double elasticEnergy(const Eigen::Vector3d& eps) const
+    {
+        if constexpr (requires(const Model& m) { m.elasticEnergyOf(eps); })
+        {
+            return model().elasticEnergyOf(eps);
+        }
+        else
+        {
+            return law_.energy(eps);
+        }
+    }
     double waveSpeedOf(const Mat<D>& F, const State& state) const;
 
     PlasticHistory<D> history_;
@@ -142,11 +168,11 @@ ReturnMapPlasticity<D, Model>::returnMap(const Mat<D>& F, const State& committed
         {
             r.flow = model().returnPrincipal(p.eps, committed.alpha);
         }
-        const Eigen::Vector3d tau = law_.kirchhoff(p.eps);
+        const Eigen::Vector3d tau = kirchhoff(p.eps);
         const Mat<D> Finv = F.inverse();
         r.P = p.assemble(tau) * Finv.transpose();
         r.maxAbsTau = tau.cwiseAbs().maxCoeff();
-        r.energy = law_.energy(p.eps);
+        r.energy = elasticEnergy(p.eps);
         if (wantNext && r.flow.deltaGamma > 0.0)
         {
             // (§P4 step 4) Cp⁻¹ = F⁻¹ be F⁻ᵀ of the returned be = Σ exp(2εᵢ) nᵢ⊗nᵢ.
@@ -297,7 +323,12 @@ ReturnMapPlasticity<D, Model>::startFromStress(std::size_t a, const Eigen::Matri
         s.inversePlastic = 0.5 * (s.inversePlastic + s.inversePlastic.transpose());
         s.inversePlasticZZ = D == 2 ? std::exp(2.0 * eps[2]) : 1.0;
     }
-    if (returnMap(Mat<D>::Identity(), s, false).flow.deltaGamma > 0.0)
+    // Outside the yield surface (or beyond what the elastic law can hold, e.g. a tension
+    // above druckerPrager's tensile strength): the point would not keep the stress.
+    const Result atStart = returnMap(Mat<D>::Identity(), s, false);
+    const Mat<D> given = sigma.template topLeftCorner<D, D>();
+    if (atStart.flow.deltaGamma > 0.0 ||
+        (atStart.P - given).cwiseAbs().maxCoeff() > 1e-9 * std::max(sigma.norm(), 1e-300))
     {
         return Material<D>::InitialStress::outsideYieldSurface;
     }
