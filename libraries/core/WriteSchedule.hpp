@@ -10,6 +10,7 @@
 #include "InputError.hpp"
 #include "SourceLocation.hpp"
 
+#include <cmath>
 #include <limits>
 
 namespace sph
@@ -24,9 +25,12 @@ public:
     {
     }
 
+    // Round-off counts as on time: 1e-6 of the step, or 1e-12 of the time itself for the last
+    // level, where no step follows (deltaT = 0) and the run stopped at endTime within
+    // round-off (0.9999999999999999 for 1).
     bool due(double time, double deltaT) const
     {
-        return interval_ <= 0.0 || time >= next_ - 1e-6 * deltaT;
+        return interval_ <= 0.0 || time >= next_ - 1e-6 * deltaT - 1e-12 * std::abs(next_);
     }
     // After a write at `time`: the next multiple of the interval after it.
     void written(double time, double deltaT)

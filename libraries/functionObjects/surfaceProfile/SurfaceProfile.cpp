@@ -1,0 +1,276 @@
+// `surfaceProfile` (2D): the free surface of a deposit, y_top(x), against a measured one — the
+// final profile of a granular column collapse (tutorials/geomaterials/columnCollapse).
+// The particles of the chosen bodies are put into columns of width `binWidth` along x (from
+// x = 0); a column's surface is its highest particle centre plus half a spacing (particles sit
+// at the centres of their cells), an empty column's is 0 (the floor).
+// Keys:
+//   bodies     | which bodies ( ) = all                                         | ()
+//   binWidth   | column width [m], > 0                                          | the spacing
+//   reference  | a measured profile: a text file (relative to the case) of x y pairs, comma or
+//              | blank separated, '#' comments and one header line allowed      | none
+// Output, at each row time: postProcessing/<name>/<name>_<time>.dat (x height [reference]
+// at the column centres) and a row of <name>.dat:
+//   front      the largest x of the particles plus half a spacing (the run-out) [m]
+//   top        the largest height [m]
+//   largestDistance, atX  with a reference: the largest |y_top(x_r) − y_r| over the
+//              reference's points (y_top interpolated linearly between column centres) and
+//              where [m]
+// summary.json: the same values at the last row.
+#include "core/Format.hpp"
+#include "core/InputError.hpp"
+#include "core/TextFile.hpp"
+#include "functionObjects/FunctionObjectModel.hpp"
+#include "io/AtomicFile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+namespace sph
+{
+
+template <int D>
+class SurfaceProfile : public FunctionObjectModel<D>
+{
+public:
+    static std::string description()
+    {
+        return "2D: the free surface y_top(x) of the chosen bodies at intervals, its front "
+               "(run-out) and top, and the largest vertical distance to a measured profile.";
+    }
+    static Schema schema()
+    {
+        return FunctionObjectModel<D>::commonSchema()
+            .add(Key::bodyList("bodies", "which bodies; () = all").defaultValue("()"))
+            .add(Key::real("binWidth", "column width [m] (default: the particle spacing)")
+                     .positive()
+                     .optional())
+            .add(Key::string("reference", "a measured profile: x y pairs [m] (file relative "
+                                          "to the case)")
+                     .optional());
+    }
+
+    SurfaceProfile(const Params& params, const typename FunctionObject<D>::Args& args)
+        : FunctionObjectModel<D>(params, args)
+    {
+        const auto& names = *args.bodyNames;
+        bodies_ = params.bodyIndices("bodies");
+        if (bodies_.empty())
+        {
+            for (std::size_t b = 0; b < names.size(); ++b)
+            {
+                bodies_.push_back(b);
+            }
+        }
+        // Half a spacing: the cell the outermost particle centre stands for.
+        const ParticleSet<D>& p = *args.initial;
+        double spacing = 0.0;
+        std::size_t count = 0;
+        for (const std::size_t b : bodies_)
+        {
+            for (std::size_t a = p.bodies[b].begin; a < p.bodies[b].end; ++a)
+            {
+                spacing += std::sqrt(p.V0[a]);
+                ++count;
+            }
+        }
+        half_ = count > 0 ? 0.5 * spacing / static_cast<double>(count) : 0.0;
+        width_ = params.has("binWidth") ? params.real("binWidth") : 2.0 * half_;
+        std::vector<std::string> columns{"front", "top"};
+        if (params.has("reference"))
+        {
+            readReference(args.caseDir / params.string("reference"), params);
+            columns.push_back("largestDistance");
+            columns.push_back("atX");
+        }
+        this->setColumns(columns);
+    }
+
+    void execute(const StepState<D>& state) override
+    {
+        if (!this->rowDue(state.time, state.deltaT))
+        {
+            return;
+        }
+        const ParticleSet<D>& p = state.particles;
+        double front = 0.0;
+        std::vector<double> height;
+        for (const std::size_t b : bodies_)
+        {
+            for (std::size_t a = p.bodies[b].begin; a < p.bodies[b].end; ++a)
+            {
+                const double x = p.x[a][0];
+                front = std::max(front, x + half_);
+                if (x < 0.0 || !std::isfinite(x))
+                {
+                    continue; // left of the origin (behind a wall at x = 0): not profiled
+                }
+                const auto column = static_cast<std::size_t>(x / width_);
+                if (column >= height.size())
+                {
+                    height.resize(column + 1, 0.0);
+                }
+                height[column] = std::max(height[column], p.x[a][1] + half_);
+            }
+        }
+        const double top = height.empty() ? 0.0 : *std::max_element(height.begin(), height.end());
+        std::vector<double> row{front, top};
+        std::ostringstream table;
+        table << "# x height" << (reference_.empty() ? "" : " reference") << "\n";
+        char line[96];
+        for (std::size_t c = 0; c < height.size(); ++c)
+        {
+            const double x = (static_cast<double>(c) + 0.5) * width_;
+            std::snprintf(line, sizeof line, "%.9g %.9g", x, height[c]);
+            table << line;
+            if (!reference_.empty())
+            {
+                std::snprintf(line, sizeof line, " %.9g", referenceAt(x));
+                table << line;
+            }
+            table << "\n";
+        }
+        if (!reference_.empty())
+        {
+            double largest = -1.0;
+            double at = 0.0;
+            for (const auto& [x, y] : reference_)
+            {
+                const double distance = std::abs(heightAt(height, x) - y);
+                if (distance > largest)
+                {
+                    largest = distance;
+                    at = x;
+                }
+            }
+            row.push_back(largest);
+            row.push_back(at);
+        }
+        last_ = row;
+        char time[32];
+        std::snprintf(time, sizeof time, "%g", state.time);
+        writeTextAtomically(this->folder() / (this->name() + "_" + time + ".dat"), table.str());
+        this->writeRow(state.time, state.deltaT, row);
+    }
+
+    std::vector<std::string> report() const override
+    {
+        if (last_.empty())
+        {
+            return {};
+        }
+        char line[256];
+        std::snprintf(line, sizeof line, "%s: front %.4g m, top %.4g m", this->name().c_str(),
+                      last_[0], last_[1]);
+        std::string text = line;
+        if (last_.size() > 2)
+        {
+            std::snprintf(line, sizeof line, ", largest distance to the reference %.4g m at x = %.4g m",
+                          last_[2], last_[3]);
+            text += line;
+        }
+        return {text};
+    }
+    std::map<std::string, double> results() const override
+    {
+        std::map<std::string, double> values;
+        if (last_.empty())
+        {
+            return values;
+        }
+        values["front"] = last_[0];
+        values["top"] = last_[1];
+        if (last_.size() > 2)
+        {
+            values["largestDistance"] = last_[2];
+            values["atX"] = last_[3];
+        }
+        return values;
+    }
+
+private:
+    // The surface at x, linear between column centres (0 beyond the last column).
+    double heightAt(const std::vector<double>& height, double x) const
+    {
+        const double s = x / width_ - 0.5;
+        if (height.empty() || s >= static_cast<double>(height.size()))
+        {
+            return 0.0;
+        }
+        if (s <= 0.0)
+        {
+            return height.front();
+        }
+        const auto i = static_cast<std::size_t>(s);
+        const double next = i + 1 < height.size() ? height[i + 1] : 0.0;
+        return height[i] + (s - static_cast<double>(i)) * (next - height[i]);
+    }
+    double referenceAt(double x) const
+    {
+        if (x <= reference_.front().first)
+        {
+            return reference_.front().second;
+        }
+        if (x >= reference_.back().first)
+        {
+            return x == reference_.back().first ? reference_.back().second : 0.0;
+        }
+        const auto upper = std::upper_bound(reference_.begin(), reference_.end(), x,
+                                            [](double v, const auto& point) { return v < point.first; });
+        const auto lower = upper - 1;
+        const double t = (x - lower->first) / (upper->first - lower->first);
+        return lower->second + t * (upper->second - lower->second);
+    }
+    void readReference(const std::filesystem::path& file, const Params& params)
+    {
+        const std::string text = readTextFile(file, "reference profile", {});
+        std::istringstream lines(text);
+        std::string line;
+        int number = 0;
+        bool headerSeen = false;
+        while (std::getline(lines, line))
+        {
+            ++number;
+            std::replace(line.begin(), line.end(), ',', ' ');
+            const auto first = line.find_first_not_of(" \t\r");
+            if (first == std::string::npos || line[first] == '#')
+            {
+                continue;
+            }
+            std::istringstream values(line);
+            double x = 0.0;
+            double y = 0.0;
+            if (!(values >> x >> y) || !std::isfinite(x) || !std::isfinite(y))
+            {
+                if (!headerSeen && reference_.empty())
+                {
+                    headerSeen = true; // one header line ("x,y")
+                    continue;
+                }
+                params.fail("reference", "surfaceProfile: " + file.string() + ":" +
+                                             std::to_string(number) + ": not an 'x y' pair of numbers",
+                            {"The file holds x y pairs [m], comma or blank separated; '#' starts "
+                             "a comment, one header line is allowed."});
+            }
+            reference_.emplace_back(x, y);
+        }
+        if (reference_.size() < 2)
+        {
+            params.fail("reference", "surfaceProfile: " + file.string() +
+                                         " holds fewer than two points");
+        }
+        std::sort(reference_.begin(), reference_.end());
+    }
+
+    std::vector<std::size_t> bodies_;
+    double half_ = 0.0;
+    double width_ = 0.0;
+    std::vector<std::pair<double, double>> reference_;
+    std::vector<double> last_;
+};
+
+SPH_REGISTER_DIM_MODEL_FOR(FunctionObject, SurfaceProfile, "surfaceProfile", 2);
+
+} // namespace sph

@@ -1,0 +1,72 @@
+// The `surfaceProfile` function object (functionObjects/surfaceProfile): the free surface of a
+// block at rest column by column (highest centre + half a spacing), its front and top, the
+// largest vertical distance to a reference profile computed by hand, the profile tables, and
+// clean errors for a missing or garbled reference file.
+#include "solver/SolverCases.hpp"
+
+using namespace sph;
+
+namespace
+{
+
+// A 4 x 2 block (spacing 1 cm) of stiff material at rest; `reference` is written to ref.csv.
+std::filesystem::path writeProfileCase(const std::filesystem::path& folder, const std::string& reference)
+{
+    const auto caseDir = test::writeWallCase(folder, 2,
+                                             "block { type box; min (0 0); max (0.04 0.02); spacing 0.01; }",
+                                             "block { material $stiff; }", "", 1e-4);
+    std::ofstream(caseDir / "system" / "controlDict")
+        << "endTime 1e-4;\ncourant 0.3;\nwriteInterval 1e-4;\nfunctions\n{\n"
+        << "    surface { type surfaceProfile; writeInterval 1e-4; reference \"ref.csv\"; }\n}\n";
+    std::ofstream(caseDir / "ref.csv") << reference;
+    return caseDir;
+}
+
+} // namespace
+
+TEST_CASE("surfaceProfile: front, top and the largest distance to a reference, by hand",
+          "[surfaceProfile][functionObjects]")
+{
+    test::TempDir dir;
+    // Columns centred at x = 5, 15, 25, 35 mm, each 0.02 m high; beyond x = 40 mm the floor.
+    // At x = 0 the surface is the first column's, 0.02 (reference 0.03: distance 0.01); at
+    // x = 0.04, halfway from the last centre (0.02) to the floor: 0.01 (reference 0.01: 0);
+    // at 0.02: 0.02 (reference 0.015: 0.005).
+    const auto caseDir = writeProfileCase(dir.path() / "block",
+                                          "# a comment\nx,y\n0,0.03\n0.02 0.015\n0.04,0.01\n");
+    REQUIRE(test::runParticles(caseDir) == 0);
+    std::string output;
+    REQUIRE(test::runProcess("sphSolid", {"-case", caseDir.string()}, &output) == 0);
+    INFO(output);
+    CHECK(test::summaryValue(caseDir, "functions/surface/front") == Approx(0.04).epsilon(1e-9));
+    CHECK(test::summaryValue(caseDir, "functions/surface/top") == Approx(0.02).epsilon(1e-9));
+    CHECK(test::summaryValue(caseDir, "functions/surface/largestDistance") == Approx(0.01).epsilon(1e-6));
+    CHECK(test::summaryValue(caseDir, "functions/surface/atX") == 0.0);
+    CHECK_THAT(output, Catch::Contains("surface: front 0.04 m, top 0.02 m, largest distance to the "
+                                       "reference 0.01 m at x = 0 m"));
+    const auto profile = test::readTable(caseDir / "postProcessing" / "surface" / "surface_0.0001.dat");
+    CHECK(profile.column("x") == std::vector<double>{0.005, 0.015, 0.025, 0.035});
+    for (const double h : profile.column("height"))
+    {
+        CHECK(h == Approx(0.02).epsilon(1e-9));
+    }
+    CHECK(profile.column("reference").front() == Approx(0.02625).epsilon(1e-9)); // 0.03 - 0.015/4
+}
+
+TEST_CASE("surfaceProfile: a missing or garbled reference is an input error at its key",
+          "[surfaceProfile][functionObjects][errors]")
+{
+    test::TempDir dir;
+    const auto garbled = writeProfileCase(dir.path() / "garbled", "x,y\n0,0.03\n0.02 high\n");
+    REQUIRE(test::runParticles(garbled) == 0);
+    std::string output;
+    CHECK(test::runProcess("sphSolid", {"-case", garbled.string(), "-dryRun"}, &output) == 1);
+    CHECK_THAT(output, Catch::Contains("system/controlDict:6:") &&
+                           Catch::Contains("ref.csv:3: not an 'x y' pair of numbers"));
+    const auto missing = writeProfileCase(dir.path() / "missing", "");
+    std::filesystem::remove(missing / "ref.csv");
+    REQUIRE(test::runParticles(missing) == 0);
+    output.clear();
+    CHECK(test::runProcess("sphSolid", {"-case", missing.string(), "-dryRun"}, &output) == 1);
+    CHECK_THAT(output, Catch::Contains("cannot read reference profile") && Catch::Contains("ref.csv"));
+}

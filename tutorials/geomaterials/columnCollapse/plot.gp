@@ -1,0 +1,16 @@
+# gnuplot plot.gp (after ./Allrun): the final free surface against the measured one
+# (finalProfile.png) and the surface at a few times (collapse.png).
+set terminal pngcairo size 1000,420 font ",11"
+set datafile separator whitespace
+set xlabel "x [m]"
+set ylabel "height [m]"
+set size ratio -1
+set xrange [0:0.5]
+set yrange [0:0.12]
+set key top right
+set output "finalProfile.png"
+set datafile commentschars "#x"
+plot "postProcessing/surface/surface_1.dat" using 1:2 with steps lw 2 title "sphSolid, t = 1 s", \
+     "< tr ',' ' ' < constant/measuredSurface.csv" using 1:2 with linespoints pt 7 ps 0.6 title "measured (Bui et al. 2008)"
+set output "collapse.png"
+plot for [t in "0 0.1 0.2 0.3 0.5 1"] "postProcessing/surface/surface_".t.".dat" using 1:2 with steps title "t = ".t." s"
