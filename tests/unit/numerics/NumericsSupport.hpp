@@ -304,6 +304,28 @@ double schemeHOverDx()
     return D == 3 ? 1.6 : 1.4;
 }
 
+// The largest component of T − (−∂Π/∂x), Π by central differences (step in units of x) at
+// every particle and direction: how far forces are from the energy's gradient.
+template <int D>
+double largestForceError(SchemeFixture<D>& fixture, const std::vector<Vec<D>>& x,
+                         const std::vector<Vec<D>>& T, double step = 1e-6)
+{
+    double error = 0.0;
+    for (std::size_t c = 0; c < x.size(); ++c)
+    {
+        for (int i = 0; i < D; ++i)
+        {
+            auto xp = x;
+            auto xm = x;
+            xp[c][i] += step;
+            xm[c][i] -= step;
+            const double numeric = -(fixture.energy(xp) - fixture.energy(xm)) / (2 * step);
+            error = std::max(error, std::abs(T[c][i] - numeric));
+        }
+    }
+    return error;
+}
+
 // One material point driven like a particle of the solver: trial evaluations from its
 // committed state, one commit per level, and its history fields read back.
 template <int D>

@@ -87,21 +87,7 @@ void plasticForces(const std::string& name, bool updated, const std::string& ext
         return; // not an energy gradient: hourglass pair forces (spec §12), linearised samples,
                 // non-associative flow (§P9)
     }
-    const double step = 1e-6;
-    double error = 0.0;
-    for (std::size_t c = 0; c < x.size(); ++c)
-    {
-        for (int i = 0; i < D; ++i)
-        {
-            auto xp = x;
-            auto xm = x;
-            xp[c][i] += step;
-            xm[c][i] -= step;
-            const double numeric = -(fixture.energy(xp) - fixture.energy(xm)) / (2 * step);
-            error = std::max(error, std::abs(T[c][i] - numeric));
-        }
-    }
-    CHECK(error / maxForce < 1e-6);
+    CHECK(test::largestForceError(fixture, x, T) / maxForce < 1e-6);
 }
 
 // The commit moves exactly the dissipation Σ V0 σy0 Δα out of the strain energy (P5.3): for

@@ -110,24 +110,7 @@ void checkForces(const std::string& name, bool updated)
     }
     else
     {
-        std::vector<Vec<D>> numeric(x.size());
-        const double step = 1e-6;
-        for (std::size_t c = 0; c < x.size(); ++c)
-        {
-            for (int i = 0; i < D; ++i)
-            {
-                auto xp = x;
-                auto xm = x;
-                xp[c][i] += step;
-                xm[c][i] -= step;
-                numeric[c][i] = -(fixture.energy(xp) - fixture.energy(xm)) / (2 * step);
-            }
-        }
-        double error = 0.0;
-        for (std::size_t a = 0; a < x.size(); ++a)
-        {
-            error = std::max(error, (T[a] - numeric[a]).cwiseAbs().maxCoeff());
-        }
+        const double error = test::largestForceError(fixture, x, T);
         CHECK(error / maxForce < 1e-6);
         // The energy returned with the forces is the same Π.
         std::vector<Vec<D>> T2;

@@ -48,18 +48,6 @@ std::filesystem::path writeColumnCase(const std::filesystem::path& folder,
     return folder;
 }
 
-// ∫ f dt / (t_end - t_0) over the rows of a table (trapezoid rule).
-double timeAverage(const test::Table& table, const std::string& column)
-{
-    const auto t = table.column("time");
-    const auto f = table.column(column);
-    double integral = 0.0;
-    for (std::size_t i = 1; i < t.size(); ++i)
-    {
-        integral += 0.5 * (f[i] + f[i - 1]) * (t[i] - t[i - 1]);
-    }
-    return integral / (t.back() - t.front());
-}
 
 VtuData output(const std::filesystem::path& caseDir, std::size_t index)
 {
@@ -118,9 +106,9 @@ TEST_CASE("geostatic: a column at rest in a box carries its weight and does not 
         REQUIRE(test::runParticles(caseDir) == 0);
         REQUIRE(test::runSolver(caseDir) == 0);
         const auto walls = test::readTable(caseDir / "postProcessing" / "walls" / "walls.dat");
-        CHECK(timeAverage(walls, "floor_Fy") == Approx(weight).epsilon(5e-3));
-        CHECK(-timeAverage(walls, "gate_Fx") == Approx(thrust).epsilon(c.thrustTolerance));
-        CHECK(timeAverage(walls, "back_Fx") == Approx(thrust).epsilon(c.thrustTolerance));
+        CHECK(test::timeAverage(walls, "floor_Fy") == Approx(weight).epsilon(5e-3));
+        CHECK(-test::timeAverage(walls, "gate_Fx") == Approx(thrust).epsilon(c.thrustTolerance));
+        CHECK(test::timeAverage(walls, "back_Fx") == Approx(thrust).epsilon(c.thrustTolerance));
         const auto extent = test::readTable(caseDir / "postProcessing" / "extent" / "extent.dat");
         double largest = 0.0;
         for (const double u : extent.column("column_maxDisplacement"))

@@ -33,6 +33,19 @@ inline std::filesystem::path writeBlockCase(const std::filesystem::path& folder,
     return folder;
 }
 
+// ∫ f dt / (t_end - t_0) over the rows of a table (trapezoid rule; the steps vary a little).
+inline double timeAverage(const Table& table, const std::string& column)
+{
+    const auto t = table.column("time");
+    const auto f = table.column(column);
+    double integral = 0.0;
+    for (std::size_t i = 1; i < t.size(); ++i)
+    {
+        integral += 0.5 * (f[i] + f[i - 1]) * (t[i] - t[i - 1]);
+    }
+    return integral / (t.back() - t.front());
+}
+
 // A small block of stiff linear-elastic material (c0 = 116 m/s, spacing 1 cm) against rigid
 // walls, with the `energy` and `wallForce` (named `walls`) tables written every step.
 // `particles` and `bodies` are the bodies of system/particlesDict and constant/bodies;

@@ -39,18 +39,6 @@ double meanDisplacement(const std::filesystem::path& caseDir, int d)
     return sum / static_cast<double>(n);
 }
 
-// ∫ f dt / (t_end - t_0) over the rows of a table (trapezoid rule; the steps vary a little).
-double timeAverage(const test::Table& table, const std::string& column)
-{
-    const auto t = table.column("time");
-    const auto f = table.column(column);
-    double integral = 0.0;
-    for (std::size_t i = 1; i < t.size(); ++i)
-    {
-        integral += 0.5 * (f[i] + f[i - 1]) * (t[i] - t[i - 1]);
-    }
-    return integral / (t.back() - t.front());
-}
 
 test::Table table(const std::filesystem::path& caseDir, const std::string& name)
 {
@@ -173,7 +161,7 @@ TEST_CASE("walls: at rest on a floor the wall carries the weight (2D and 3D)", "
         REQUIRE(test::runParticles(folder) == 0);
         REQUIRE(test::runSolver(folder) == 0);
         const auto walls = table(folder, "walls");
-        CHECK(timeAverage(walls, c.column) == Approx(c.weight).epsilon(1e-2));
+        CHECK(test::timeAverage(walls, c.column) == Approx(c.weight).epsilon(1e-2));
         CHECK(std::abs(test::summaryValue(folder, "functions/energy/maxDrift")) < 1e-2);
     }
 }
