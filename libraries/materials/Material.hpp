@@ -109,6 +109,16 @@ public:
                           HistoryOf history) const = 0;
     // The largest wave speed of particles first .. first + n at their gradients F[0 .. n).
     virtual double maxWaveSpeed(const Mat<D>* F, std::size_t n, std::size_t first) const = 0;
+    // The same as forces see it whose gradients are taken in a moved reference configuration
+    // with gradients Fr (updated Lagrangian): the stretch that shortens the waves is the one
+    // since the reference, f = F Fr⁻¹, not the total F (theory (P2.6)). By default the
+    // total-F bound, which is never smaller.
+    virtual double maxWaveSpeedSinceReference(const Mat<D>* F, const Mat<D>* Fr, std::size_t n,
+                                              std::size_t first) const
+    {
+        (void)Fr;
+        return maxWaveSpeed(F, n, first);
+    }
     // Young's modulus (used by hourglass control, spec §12).
     virtual double youngsModulus() const = 0;
 

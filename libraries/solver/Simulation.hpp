@@ -116,6 +116,7 @@ private:
     void applyContact(double dt);                 // x^{n+1}, F(x^{n+1}) -> Δv, W_contact
     void checkOrder(double dt);                   // 1D: x^{n+1} -> failure if out of order
     WaveSpeedBound waveSpeedBound() const;
+    double waveSpeedOf(std::size_t b, std::size_t first, std::size_t n) const;
     [[noreturn]] void fail(const ForceStatus& status, const std::string& when);
     long crossingParticle() const;
     std::string particleName(std::size_t a) const;

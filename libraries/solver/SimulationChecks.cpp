@@ -12,6 +12,19 @@
 namespace sph
 {
 
+// The largest wave speed of particles first .. first + n of body b as the forces see it: in
+// an updated-Lagrangian run, with the stretch since the reference moved (theory (P2.6)).
+template <int D>
+double Simulation<D>::waveSpeedOf(std::size_t b, std::size_t first, std::size_t n) const
+{
+    if (formulation_->updatesReference())
+    {
+        return materials_[b]->maxWaveSpeedSinceReference(
+            &particles_.F[first], &reference_->reference().F[first], n, first);
+    }
+    return materials_[b]->maxWaveSpeed(&particles_.F[first], n, first);
+}
+
 template <int D>
 WaveSpeedBound Simulation<D>::waveSpeedBound() const
 {
@@ -26,7 +39,7 @@ WaveSpeedBound Simulation<D>::waveSpeedBound() const
         {
             const std::size_t first = range.begin + static_cast<std::size_t>(i) * chunk;
             const std::size_t count = std::min(chunk, range.end - first);
-            c = std::max(c, materials_[b]->maxWaveSpeed(&particles_.F[first], count, first));
+            c = std::max(c, waveSpeedOf(b, first, count));
         }
         return c;
     };
@@ -51,7 +64,7 @@ WaveSpeedBound Simulation<D>::waveSpeedBound() const
         double best = -1.0;
         for (std::size_t a = range.begin; a < range.end; ++a)
         {
-            const double ca = materials_[body]->maxWaveSpeed(&particles_.F[a], 1, a);
+            const double ca = waveSpeedOf(body, a, 1);
             if (!(ca <= best))
             {
                 best = ca;

@@ -61,6 +61,8 @@ public:
     void evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n,
                   HistoryOf history) const override;
     double maxWaveSpeed(const Mat<D>* F, std::size_t n, std::size_t first) const override;
+    double maxWaveSpeedSinceReference(const Mat<D>* F, const Mat<D>* Fr, std::size_t n,
+                                      std::size_t first) const override;
     double youngsModulus() const override { return elastic_.E; }
 
     bool hasHistory() const override { return true; }
@@ -110,7 +112,9 @@ private:
             return law_.energy(eps);
         }
     }
-    double waveSpeedOf(const Mat<D>& F, const State& state) const;
+    // (P2.5) with the stretch of `stretched` (F itself, or f = F Fr⁻¹ (P2.6)).
+    double waveSpeedOf(const Mat<D>& F, const State& state) const { return waveSpeedOf(F, state, F); }
+    double waveSpeedOf(const Mat<D>& F, const State& state, const Mat<D>& stretched) const;
 
     PlasticHistory<D> history_;
 };
@@ -280,13 +284,27 @@ PlasticCorrection<D> ReturnMapPlasticity<D, Model>::plasticCorrection(const Mat<
 }
 
 template <int D, class Model>
-double ReturnMapPlasticity<D, Model>::waveSpeedOf(const Mat<D>& F, const State& s) const
+double ReturnMapPlasticity<D, Model>::waveSpeedOf(const Mat<D>& F, const State& s,
+                                                  const Mat<D>& stretched) const
 {
     const Result r = returnMap(F, s, false);
-    // (P2.5): the elastic modulus bounds the elastoplastic one; the total stretch sets the scale.
+    // (P2.5): the elastic modulus bounds the elastoplastic one; the stretch sets the scale.
     const double M = D == 1 ? elastic_.E : law_.longitudinalModulus();
-    const double lowest = stretchSquaredRange<D>(F).first;
+    const double lowest = stretchSquaredRange<D>(stretched).first;
     return std::sqrt((M + r.maxAbsTau) / lowest / this->density());
+}
+
+template <int D, class Model>
+double ReturnMapPlasticity<D, Model>::maxWaveSpeedSinceReference(const Mat<D>* F, const Mat<D>* Fr,
+                                                                 std::size_t n,
+                                                                 std::size_t first) const
+{
+    double c = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        c = std::max(c, waveSpeedOf(F[i], state(first + i), Mat<D>(F[i] * Fr[i].inverse())));
+    }
+    return c;
 }
 
 template <int D, class Model>
