@@ -26,7 +26,7 @@
 #include <Eigen/SVD>
 
 #include <cmath>
-#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace sph
@@ -74,7 +74,7 @@ long CorrectedGradient<D>::build(const NeighbourList& list, const std::vector<Ve
     const std::size_t n = list.particleCount();
     L.resize(n);
     e.resize(n);
-    std::vector<std::uint8_t> regularised(n, 0);
+    std::vector<std::pair<std::size_t, Mat<D>>> found; // C_a of the few deficient particles
     long singular = -1;
 #pragma omp parallel for schedule(static) reduction(max : singular) if (useThreads(n))
     for (std::size_t a = 0; a < n; ++a)
@@ -115,40 +115,26 @@ long CorrectedGradient<D>::build(const NeighbourList& list, const std::vector<Ve
             L[a] = M.inverse().transpose();
             continue;
         }
-        regularised[a] = 1;
         Vec<D> inverse;
+        Vec<D> unseen; // 1 − σ/σ': the part of each direction L_a cannot see
         for (int i = 0; i < D; ++i)
         {
             inverse[i] = 1.0 / std::max(sigma[i], smallestSingularValue);
+            unseen[i] = 1.0 - sigma[i] * inverse[i];
         }
         L[a] = svd.matrixU() * inverse.asDiagonal() * svd.matrixV().transpose();
+        const Mat<D> C = svd.matrixU() * unseen.asDiagonal() * svd.matrixU().transpose();
+#pragma omp critical(sphDeficientSupports)
+        found.emplace_back(a, C);
     }
-    deficient = 0;
-    for (std::size_t a = 0; a < n; ++a)
-    {
-        deficient += regularised[a];
-    }
+    deficient = found.size();
     complement.clear();
     if (deficient > 0)
     {
         complement.assign(n, Mat<D>::Zero());
-        for (std::size_t a = 0; a < n; ++a)
+        for (const auto& [a, C] : found)
         {
-            if (!regularised[a])
-            {
-                continue;
-            }
-            Mat<D> M = Mat<D>::Zero(); // as above (only for the few deficient particles)
-            for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
-            {
-                const std::size_t b = list.indices[k];
-                M.noalias() += (x[b] - x[a]) * (V[b] * d(a, k)).transpose();
-            }
-            if (!M.allFinite())
-            {
-                M.setZero();
-            }
-            complement[a] = Mat<D>::Identity() - M * L[a].transpose();
+            complement[a] = C;
         }
     }
     return singular < 0 ? -1 : static_cast<long>(n) - singular;

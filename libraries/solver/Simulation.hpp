@@ -70,13 +70,14 @@ private:
 
     // SimulationSetup.cpp
     void loadParticles(const InitialParticles& initial);
-    void setupBodies(const Dictionary& bodies);
-    // Sets body b's initial stress (constant/bodies: initialStress { type ...; }).
-    void setInitialStress(const Dictionary& dict, std::size_t b);
     void setupWalls();
     void setupViscosity(const SchemeSettings& schemes);
     void setupFunctionObjects();
     void checkCrossingOrder();
+    // SimulationBodies.cpp
+    void setupBodies(const Dictionary& bodies);
+    // Sets body b's initial stress (constant/bodies: initialStress { type ...; }).
+    void setInitialStress(const Dictionary& dict, std::size_t b);
 
     using FunctionState = std::map<std::string, double>; // "fo:<name>:<key>" -> value
 

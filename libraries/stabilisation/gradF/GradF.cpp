@@ -1,9 +1,7 @@
 #include "particles/Parallel.hpp"
 #include "stabilisation/gradF/GradF.hpp"
 #include "stabilisation/gradF/MonomialTensors.hpp"
-
-#include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
+#include "stabilisation/gradF/RegularisedInverse.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -35,33 +33,6 @@ template <int D>
 GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
     : linearised_(params.word("plasticSamples") == "linearised")
 {
-}
-
-// Z^{-1}, with the eigenvalues of Z/scale (mean 1) raised to at least smallestEigenvalue: a
-// neighbourhood that no longer spans the curvatures (a particle with few neighbours, a chain
-// of particles: granular flows make them once the reference moves) would otherwise turn
-// offsets of round-off size into a huge H_a. Directions no neighbour sees (eigenvalue 0)
-// contribute nothing either way: the right-hand side has no component along them.
-// Well-conditioned Z (every regular cloud: ≈ 0.25 inside a body, ≥ 0.08 at corners in 2D)
-// take Z.inverse() as before, to the bit; Z = 0 (no neighbour) gives H_a = 0.
-template <int D>
-typename GradF<D>::MatM GradF<D>::regularisedInverse(const MatM& Z, double scale)
-{
-    if (!(scale > 0.0) || !Z.allFinite())
-    {
-        return MatM::Zero();
-    }
-    const MatM normalised = Z / scale;
-    // Cholesky of Z/scale - s I succeeds exactly when every eigenvalue exceeds s.
-    if (Eigen::LLT<MatM>(normalised - smallestEigenvalue * MatM::Identity()).info() ==
-        Eigen::Success)
-    {
-        return Z.inverse();
-    }
-    const Eigen::SelfAdjointEigenSolver<MatM> eigen(normalised);
-    const MonomialVec<D> raised =
-        eigen.eigenvalues().cwiseMax(smallestEigenvalue).cwiseInverse() / scale;
-    return eigen.eigenvectors() * raised.asDiagonal() * eigen.eigenvectors().transpose();
 }
 
 template <int D>
@@ -104,7 +75,7 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
         {
             singular = std::max<long>(singular, static_cast<long>(n - a));
         }
-        Zinv_[a] = regularisedInverse(Z, scale);
+        Zinv_[a] = regularisedInverse(Z, scale, smallestEigenvalue);
         s_[a] = s;
         Y_[a] = Y;
     }

@@ -101,7 +101,6 @@ public:
 private:
     // The least-squares matrix's smallest eigenvalue, relative to its mean (regularisedInverse).
     static constexpr double smallestEigenvalue = 0.02;
-    static MatM regularisedInverse(const MatM& Z, double scale);
 
     // Per-reference data of particle a (spec §6.2, §6.3).
     double weight(const ReferenceConfiguration<D>& ref, std::size_t a, std::size_t k) const
