@@ -28,7 +28,8 @@ public:
     static Schema schema()
     {
         return Schema()
-            .add(Key::real("writeInterval", "time between snapshots [s]").positive())
+            .add(Key::real("writeInterval", "time between snapshots [s]; 0 writes every step")
+                     .nonNegative())
             .add(Key::wordList("fields", "any of: displacement velocity F P J body, or a display "
                                          "field of the models (plasticStrain, yielding, ...)")
                      .defaultValue("(P)"));

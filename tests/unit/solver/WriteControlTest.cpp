@@ -103,6 +103,24 @@ TEST_CASE("writeControl timeStep: an output every writeInterval steps", "[schedu
     CHECK(times[3] == Approx(300 * dt).epsilon(1e-12));
 }
 
+TEST_CASE("a function object's writeInterval 0 writes every step (snapshot too)",
+          "[schedule][output]")
+{
+    test::TempDir dir;
+    const auto caseDir = test::copyTutorial("bar1D/dykaBar", dir.path());
+    REQUIRE(test::runParticles(caseDir) == 0);
+    // endTime 3e-6 s takes 11 steps of 2.96e-7 s: 12 levels, each with its table.
+    REQUIRE(test::runSolver(caseDir, {"-set", "endTime=3e-6", "-set",
+                                      "functions.snap={type snapshot; writeInterval 0; "
+                                      "fields (velocity);}"}) == 0);
+    std::size_t files = 0;
+    for (const auto& file : std::filesystem::directory_iterator(caseDir / "postProcessing/snap"))
+    {
+        files += file.path().extension() == ".dat" ? 1 : 0;
+    }
+    CHECK(files == 12);
+}
+
 TEST_CASE("purgeWrite keeps the last N outputs, and a restart continues from them",
           "[schedule][output]")
 {
