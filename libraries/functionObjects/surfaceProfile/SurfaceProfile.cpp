@@ -12,6 +12,10 @@
 // at the column centres) and a row of <name>.dat:
 //   front      the largest x of the particles plus half a spacing (the run-out) [m]
 //   top        the largest height [m]
+//   depositEnd the right edge of the contiguous deposit: from its first occupied column, the
+//              left edge of the first empty one [m]. Ahead of a deposit thinner than one particle
+//              the particles scatter with gaps; front then measures the farthest of them and
+//              depositEnd where the deposit stops being continuous at this resolution.
 //   largestDistance, atX  with a reference: the largest |y_top(x_r) − y_r| over the
 //              reference's points (y_top interpolated linearly between column centres) and
 //              where [m]
@@ -78,7 +82,7 @@ public:
         }
         half_ = count > 0 ? 0.5 * spacing / static_cast<double>(count) : 0.0;
         width_ = params.has("binWidth") ? params.real("binWidth") : 2.0 * half_;
-        std::vector<std::string> columns{"front", "top"};
+        std::vector<std::string> columns{"front", "top", "depositEnd"};
         if (params.has("reference"))
         {
             readReference(args.caseDir / params.string("reference"), params);
@@ -116,7 +120,7 @@ public:
             }
         }
         const double top = height.empty() ? 0.0 : *std::max_element(height.begin(), height.end());
-        std::vector<double> row{front, top};
+        std::vector<double> row{front, top, depositEnd(height)};
         std::ostringstream table;
         table << "# x height" << (reference_.empty() ? "" : " reference") << "\n";
         char line[96];
@@ -162,13 +166,13 @@ public:
             return {};
         }
         char line[256];
-        std::snprintf(line, sizeof line, "%s: front %.4g m, top %.4g m", this->name().c_str(),
-                      last_[0], last_[1]);
+        std::snprintf(line, sizeof line, "%s: front %.4g m, top %.4g m, deposit end %.4g m",
+                      this->name().c_str(), last_[0], last_[1], last_[2]);
         std::string text = line;
-        if (last_.size() > 2)
+        if (last_.size() > 3)
         {
             std::snprintf(line, sizeof line, ", largest distance to the reference %.4g m at x = %.4g m",
-                          last_[2], last_[3]);
+                          last_[3], last_[4]);
             text += line;
         }
         return {text};
@@ -182,15 +186,30 @@ public:
         }
         values["front"] = last_[0];
         values["top"] = last_[1];
+        values["depositEnd"] = last_[2];
         if (last_.size() > 2)
         {
-            values["largestDistance"] = last_[2];
-            values["atX"] = last_[3];
+            values["largestDistance"] = last_[3];
+            values["atX"] = last_[4];
         }
         return values;
     }
 
 private:
+    double depositEnd(const std::vector<double>& height) const
+    {
+        std::size_t c = 0;
+        while (c < height.size() && height[c] == 0.0)
+        {
+            ++c;
+        }
+        while (c < height.size() && height[c] > 0.0)
+        {
+            ++c;
+        }
+        return static_cast<double>(c) * width_;
+    }
+
     // The surface at x, linear between column centres (0 beyond the last column).
     double heightAt(const std::vector<double>& height, double x) const
     {

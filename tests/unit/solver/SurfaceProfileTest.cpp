@@ -42,8 +42,9 @@ TEST_CASE("surfaceProfile: front, top and the largest distance to a reference, b
     CHECK(test::summaryValue(caseDir, "functions/surface/top") == Approx(0.02).epsilon(1e-9));
     CHECK(test::summaryValue(caseDir, "functions/surface/largestDistance") == Approx(0.01).epsilon(1e-6));
     CHECK(test::summaryValue(caseDir, "functions/surface/atX") == 0.0);
-    CHECK_THAT(output, Catch::Contains("surface: front 0.04 m, top 0.02 m, largest distance to the "
-                                       "reference 0.01 m at x = 0 m"));
+    CHECK(test::summaryValue(caseDir, "functions/surface/depositEnd") == Approx(0.04).epsilon(1e-9));
+    CHECK_THAT(output, Catch::Contains("surface: front 0.04 m, top 0.02 m, deposit end 0.04 m, "
+                                       "largest distance to the reference 0.01 m at x = 0 m"));
     const auto profile = test::readTable(caseDir / "postProcessing" / "surface" / "surface_0.0001.dat");
     CHECK(profile.column("x") == std::vector<double>{0.005, 0.015, 0.025, 0.035});
     for (const double h : profile.column("height"))
@@ -51,6 +52,34 @@ TEST_CASE("surfaceProfile: front, top and the largest distance to a reference, b
         CHECK(h == Approx(0.02).epsilon(1e-9));
     }
     CHECK(profile.column("reference").front() == Approx(0.02625).epsilon(1e-9)); // 0.03 - 0.015/4
+}
+
+TEST_CASE("surfaceProfile: a detached block moves the front, not the deposit's end",
+          "[surfaceProfile][functionObjects]")
+{
+    test::TempDir dir;
+    // The 4 x 2 block (columns 0-3) and a 2 x 2 one at x = 60-80 mm (columns 6, 7): columns
+    // 4 and 5 are empty, so the deposit ends at 0.04 m and the front is 0.08 m.
+    const auto caseDir = test::writeWallCase(
+        dir.path() / "stray", 2,
+        "block { type box; min (0 0); max (0.04 0.02); spacing 0.01; }\n"
+        "stray { type box; min (0.06 0); max (0.08 0.02); spacing 0.01; }",
+        "block { material $stiff; }\nstray { material $stiff; }", "", 1e-4);
+    std::ofstream(caseDir / "system" / "controlDict")
+        << "endTime 1e-4;\ncourant 0.3;\nwriteInterval 1e-4;\nfunctions\n{\n"
+        << "    surface { type surfaceProfile; writeInterval 1e-4; }\n}\n";
+    REQUIRE(test::runParticles(caseDir) == 0);
+    REQUIRE(test::runSolver(caseDir) == 0);
+    CHECK(test::summaryValue(caseDir, "functions/surface/front") == Approx(0.08).epsilon(1e-9));
+    CHECK(test::summaryValue(caseDir, "functions/surface/depositEnd") == Approx(0.04).epsilon(1e-9));
+    const auto profile = test::readTable(caseDir / "postProcessing" / "surface" / "surface_0.0001.dat");
+    const std::vector<double> expected{0.02, 0.02, 0.02, 0.02, 0.0, 0.0, 0.02, 0.02};
+    const auto height = profile.column("height");
+    REQUIRE(height.size() == expected.size());
+    for (std::size_t c = 0; c < expected.size(); ++c)
+    {
+        CHECK(height[c] == Approx(expected[c]).margin(1e-12));
+    }
 }
 
 TEST_CASE("surfaceProfile: a missing or garbled reference is an input error at its key",
