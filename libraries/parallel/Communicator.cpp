@@ -1,0 +1,143 @@
+#include "parallel/Communicator.hpp"
+
+#include <mpi.h>
+
+#include <numeric>
+#include <stdexcept>
+
+namespace sph
+{
+
+namespace
+{
+bool sessionOpen = false;
+
+void check(int status, const char* what)
+{
+    if (status != MPI_SUCCESS)
+    {
+        throw std::runtime_error(std::string("MPI: ") + what + " failed");
+    }
+}
+} // namespace
+
+MpiSession::MpiSession(int& argc, char**& argv)
+{
+    if (sessionOpen)
+    {
+        throw std::logic_error("MpiSession: MPI is already initialised in this process");
+    }
+    int provided = MPI_THREAD_SINGLE;
+    check(MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
+    if (provided < MPI_THREAD_FUNNELED)
+    {
+        MPI_Finalize();
+        throw std::runtime_error("MPI: this MPI library cannot be called from a program that "
+                                 "also runs OpenMP threads (MPI_THREAD_FUNNELED not provided)");
+    }
+    sessionOpen = true;
+}
+
+MpiSession::~MpiSession()
+{
+    sessionOpen = false;
+    MPI_Finalize();
+}
+
+bool MpiSession::active() { return sessionOpen; }
+
+Communicator Communicator::world()
+{
+    if (!sessionOpen)
+    {
+        return {0, 1};
+    }
+    int rank = 0;
+    int size = 1;
+    check(MPI_Comm_rank(MPI_COMM_WORLD, &rank), "MPI_Comm_rank");
+    check(MPI_Comm_size(MPI_COMM_WORLD, &size), "MPI_Comm_size");
+    return {rank, size};
+}
+
+double Communicator::minimum(double value) const
+{
+    if (!parallel())
+    {
+        return value;
+    }
+    double result = value;
+    check(MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
+    return result;
+}
+
+double Communicator::maximum(double value) const
+{
+    if (!parallel())
+    {
+        return value;
+    }
+    double result = value;
+    check(MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+    return result;
+}
+
+long long Communicator::sum(long long value) const
+{
+    if (!parallel())
+    {
+        return value;
+    }
+    long long result = value;
+    check(MPI_Allreduce(&value, &result, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD),
+          "MPI_Allreduce");
+    return result;
+}
+
+std::vector<double> Communicator::gather(double value) const
+{
+    std::vector<double> values(static_cast<std::size_t>(size_), value);
+    if (parallel())
+    {
+        check(MPI_Allgather(&value, 1, MPI_DOUBLE, values.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD),
+              "MPI_Allgather");
+    }
+    return values;
+}
+
+double Communicator::sum(double value) const
+{
+    if (!parallel())
+    {
+        return value;
+    }
+    // MPI_Allreduce may sum in any order (and differently on different ranks): gather instead.
+    const std::vector<double> values = gather(value);
+    return std::accumulate(values.begin(), values.end(), 0.0);
+}
+
+std::string Communicator::broadcast(const std::string& text, int root) const
+{
+    if (!parallel())
+    {
+        return text;
+    }
+    unsigned long long length = text.size();
+    check(MPI_Bcast(&length, 1, MPI_UNSIGNED_LONG_LONG, root, MPI_COMM_WORLD), "MPI_Bcast");
+    std::string result = rank_ == root ? text : std::string(length, '\0');
+    if (length > 0)
+    {
+        check(MPI_Bcast(result.data(), static_cast<int>(length), MPI_CHAR, root, MPI_COMM_WORLD),
+              "MPI_Bcast");
+    }
+    return result;
+}
+
+void Communicator::barrier() const
+{
+    if (parallel())
+    {
+        check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
+    }
+}
+
+} // namespace sph

@@ -1,0 +1,59 @@
+#pragma once
+// The ranks of a distributed run (issue 14: `mpirun -np N sphSolid -parallel`), behind a small
+// interface: nothing outside libraries/parallel includes mpi.h, and a serial run (no
+// MpiSession) is a communicator of one rank, so every caller is written once for both.
+//
+// Reductions that decide the run (the time step: a minimum) are exact whatever the rank
+// count, since min and max are; a sum of doubles is gathered to every rank and summed there in
+// rank order, so every rank sees the same bits (not the serial order's bits: sums only
+// report, e.g. energies).
+
+#include <string>
+#include <vector>
+
+namespace sph
+{
+
+// MPI for the lifetime of the object: initialised in the constructor (MPI_THREAD_FUNNELED: only
+// the thread that made it calls MPI, OpenMP threads compute in between) and finalised in the
+// destructor. One per process, made by main() when the run is parallel.
+class MpiSession
+{
+public:
+    MpiSession(int& argc, char**& argv);
+    ~MpiSession();
+    MpiSession(const MpiSession&) = delete;
+    MpiSession& operator=(const MpiSession&) = delete;
+
+    // Whether a session is open in this process.
+    static bool active();
+};
+
+class Communicator
+{
+public:
+    // All ranks of the run (MPI_COMM_WORLD) when an MpiSession is open, else this process alone.
+    static Communicator world();
+
+    int rank() const { return rank_; }
+    int size() const { return size_; }
+    bool parallel() const { return size_ > 1; }
+
+    double minimum(double value) const;
+    double maximum(double value) const;
+    long long sum(long long value) const;
+    // Summed in rank order on every rank: the same bits everywhere.
+    double sum(double value) const;
+    // Every rank's value, in rank order, on every rank.
+    std::vector<double> gather(double value) const;
+    // Rank `root`'s text on every rank (e.g. the one diagnosis of a failure).
+    std::string broadcast(const std::string& text, int root) const;
+    void barrier() const;
+
+private:
+    Communicator(int rank, int size) : rank_(rank), size_(size) {}
+    int rank_;
+    int size_;
+};
+
+} // namespace sph
