@@ -187,7 +187,7 @@ public:
         values["front"] = last_[0];
         values["top"] = last_[1];
         values["depositEnd"] = last_[2];
-        if (last_.size() > 2)
+        if (last_.size() > 3)
         {
             values["largestDistance"] = last_[3];
             values["atX"] = last_[4];

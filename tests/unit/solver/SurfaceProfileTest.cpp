@@ -72,6 +72,10 @@ TEST_CASE("surfaceProfile: a detached block moves the front, not the deposit's e
     REQUIRE(test::runSolver(caseDir) == 0);
     CHECK(test::summaryValue(caseDir, "functions/surface/front") == Approx(0.08).epsilon(1e-9));
     CHECK(test::summaryValue(caseDir, "functions/surface/depositEnd") == Approx(0.04).epsilon(1e-9));
+    // Without a reference there is no distance to report (not a value read past the row).
+    std::ifstream summary(caseDir / "postProcessing" / "summary.json");
+    const std::string json((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
+    CHECK(json.find("largestDistance") == std::string::npos);
     const auto profile = test::readTable(caseDir / "postProcessing" / "surface" / "surface_0.0001.dat");
     const std::vector<double> expected{0.02, 0.02, 0.02, 0.02, 0.0, 0.0, 0.02, 0.02};
     const auto height = profile.column("height");
