@@ -19,6 +19,14 @@ void check(int status, const char* what)
         throw std::runtime_error(std::string("MPI: ") + what + " failed");
     }
 }
+
+// One value combined over the ranks by op (min and max are exact in any order).
+double allReduce(double value, MPI_Op op)
+{
+    double result = value;
+    check(MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, op, MPI_COMM_WORLD), "MPI_Allreduce");
+    return result;
+}
 } // namespace
 
 MpiSession::MpiSession(int& argc, char**& argv)
@@ -61,24 +69,12 @@ Communicator Communicator::world()
 
 double Communicator::minimum(double value) const
 {
-    if (!parallel())
-    {
-        return value;
-    }
-    double result = value;
-    check(MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
-    return result;
+    return parallel() ? allReduce(value, MPI_MIN) : value;
 }
 
 double Communicator::maximum(double value) const
 {
-    if (!parallel())
-    {
-        return value;
-    }
-    double result = value;
-    check(MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
-    return result;
+    return parallel() ? allReduce(value, MPI_MAX) : value;
 }
 
 long long Communicator::sum(long long value) const
