@@ -42,7 +42,8 @@ public:
     static std::string description()
     {
         return "2D: the free surface y_top(x) of the chosen bodies at intervals, its front "
-               "(run-out) and top, and the largest vertical distance to a measured profile.";
+               "(run-out: the farthest particle), the end of the continuous deposit, its top, "
+               "and the largest vertical distance to a measured profile.";
     }
     static Schema schema()
     {
