@@ -2,6 +2,8 @@
 
 #include <mpi.h>
 
+#include <cstdlib>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 
@@ -100,6 +102,82 @@ std::vector<double> Communicator::gather(double value) const
     return values;
 }
 
+std::vector<double> Communicator::gather(const std::vector<double>& values) const
+{
+    if (!parallel())
+    {
+        return values;
+    }
+    std::vector<double> all(values.size() * static_cast<std::size_t>(size_));
+    check(MPI_Allgather(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, all.data(),
+                        static_cast<int>(values.size()), MPI_DOUBLE, MPI_COMM_WORLD),
+          "MPI_Allgather");
+    return all;
+}
+
+std::vector<std::vector<double>>
+Communicator::exchange(const std::vector<std::vector<double>>& toEach) const
+{
+    if (toEach.size() != static_cast<std::size_t>(size_))
+    {
+        throw std::logic_error("Communicator::exchange: one buffer per rank expected");
+    }
+    if (!parallel())
+    {
+        return toEach;
+    }
+    // The counts first (each rank learns what it receives), then the values in one call.
+    const auto ranks = static_cast<std::size_t>(size_);
+    std::vector<int> sendCounts(ranks), receiveCounts(ranks), sendOffsets(ranks), receiveOffsets(ranks);
+    for (std::size_t r = 0; r < ranks; ++r)
+    {
+        if (toEach[r].size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        {
+            throw std::length_error("Communicator::exchange: over 2^31 values for one rank");
+        }
+        sendCounts[r] = static_cast<int>(toEach[r].size());
+    }
+    check(MPI_Alltoall(sendCounts.data(), 1, MPI_INT, receiveCounts.data(), 1, MPI_INT,
+                       MPI_COMM_WORLD),
+          "MPI_Alltoall");
+    std::vector<double> sendBuffer;
+    std::size_t sendTotal = 0, receiveTotal = 0;
+    for (std::size_t r = 0; r < ranks; ++r)
+    {
+        sendTotal += toEach[r].size();
+        receiveTotal += static_cast<std::size_t>(receiveCounts[r]);
+    }
+    if (sendTotal > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
+        receiveTotal > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    {
+        throw std::length_error("Communicator::exchange: over 2^31 values in one exchange");
+    }
+    sendBuffer.reserve(sendTotal);
+    for (std::size_t r = 0; r < ranks; ++r)
+    {
+        sendOffsets[r] = static_cast<int>(sendBuffer.size());
+        sendBuffer.insert(sendBuffer.end(), toEach[r].begin(), toEach[r].end());
+    }
+    int offset = 0;
+    for (std::size_t r = 0; r < ranks; ++r)
+    {
+        receiveOffsets[r] = offset;
+        offset += receiveCounts[r];
+    }
+    std::vector<double> receiveBuffer(receiveTotal);
+    check(MPI_Alltoallv(sendBuffer.data(), sendCounts.data(), sendOffsets.data(), MPI_DOUBLE,
+                        receiveBuffer.data(), receiveCounts.data(), receiveOffsets.data(),
+                        MPI_DOUBLE, MPI_COMM_WORLD),
+          "MPI_Alltoallv");
+    std::vector<std::vector<double>> fromEach(ranks);
+    for (std::size_t r = 0; r < ranks; ++r)
+    {
+        const auto first = receiveBuffer.begin() + receiveOffsets[r];
+        fromEach[r].assign(first, first + receiveCounts[r]);
+    }
+    return fromEach;
+}
+
 double Communicator::sum(double value) const
 {
     if (!parallel())
@@ -134,6 +212,15 @@ void Communicator::barrier() const
     {
         check(MPI_Barrier(MPI_COMM_WORLD), "MPI_Barrier");
     }
+}
+
+void Communicator::abort(int exitCode) const
+{
+    if (sessionOpen)
+    {
+        MPI_Abort(MPI_COMM_WORLD, exitCode);
+    }
+    std::_Exit(exitCode); // MPI_Abort does not return; without a session there is no one else
 }
 
 } // namespace sph

@@ -46,9 +46,17 @@ public:
     double sum(double value) const;
     // Every rank's value, in rank order, on every rank.
     std::vector<double> gather(double value) const;
+    // Every rank's values, rank after rank, on every rank (each rank gives the same count).
+    std::vector<double> gather(const std::vector<double>& values) const;
+    // Personalised all-to-all: toEach[r] goes to rank r; the result's [r] came from rank r
+    // (the particles that migrate, the ghost values; MPI_Alltoallv). toEach has size() entries.
+    std::vector<std::vector<double>> exchange(const std::vector<std::vector<double>>& toEach) const;
     // Rank `root`'s text on every rank (e.g. the one diagnosis of a failure).
     std::string broadcast(const std::string& text, int root) const;
     void barrier() const;
+    // Stops every rank with exitCode (MPI_Abort): for an error one rank met alone, which the
+    // others would otherwise wait for forever. Without a session, this process exits (_Exit).
+    [[noreturn]] void abort(int exitCode) const;
 
 private:
     Communicator(int rank, int size) : rank_(rank), size_(size) {}

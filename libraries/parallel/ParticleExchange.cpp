@@ -1,0 +1,332 @@
+#include "parallel/ParticleExchange.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+namespace sph
+{
+
+template <int D>
+std::size_t ParticleExchange<D>::rowWidth(const ParticleFields<D>& fields)
+{
+    std::size_t width = 1; // the global id
+    for (const auto& field : fields.all())
+    {
+        if (field.array->stored())
+        {
+            width += static_cast<std::size_t>(field.components());
+        }
+    }
+    return width;
+}
+
+template <int D>
+void ParticleExchange<D>::appendRow(const ParticleFields<D>& fields, std::size_t a,
+                                    double globalId, Rows& rows)
+{
+    rows.push_back(globalId);
+    double value[D * D * D];
+    for (const auto& field : fields.all())
+    {
+        if (field.array->stored())
+        {
+            field.array->get(a, value);
+            rows.insert(rows.end(), value, value + field.components());
+        }
+    }
+}
+
+template <int D>
+void ParticleExchange<D>::replaceBy(ParticleFields<D>& fields, const Rows& rows,
+                                    std::vector<std::size_t>& origin)
+{
+    const std::size_t width = rowWidth(fields);
+    const std::size_t count = rows.size() / width;
+    if (count * width != rows.size())
+    {
+        throw std::logic_error("ParticleExchange: ranks disagree on the particle fields");
+    }
+    origin.resize(count);
+    std::iota(origin.begin(), origin.end(), std::size_t{0});
+    std::sort(origin.begin(), origin.end(),
+              [&](std::size_t i, std::size_t j) { return rows[i * width] < rows[j * width]; });
+    for (std::size_t k = 1; k < count; ++k)
+    {
+        if (rows[origin[k] * width] == rows[origin[k - 1] * width])
+        {
+            throw std::logic_error("ParticleExchange: particle " +
+                                   std::to_string(static_cast<long long>(rows[origin[k] * width])) +
+                                   " is held twice on one rank");
+        }
+    }
+    fields.resize(count);
+    for (std::size_t k = 0; k < count; ++k)
+    {
+        const double* value = &rows[origin[k] * width + 1];
+        for (auto& field : fields.all())
+        {
+            if (field.array->stored())
+            {
+                field.array->set(k, value);
+                value += field.components();
+            }
+        }
+    }
+}
+
+template <int D>
+void ParticleExchange<D>::countSent(const std::vector<Rows>& toEach)
+{
+    bytesSent_ = 0;
+    for (std::size_t r = 0; r < toEach.size(); ++r)
+    {
+        if (static_cast<int>(r) != comm_.rank())
+        {
+            bytesSent_ += toEach[r].size() * sizeof(double);
+        }
+    }
+}
+
+template <int D>
+void ParticleExchange<D>::migrate(ParticleFields<D>& fields, const std::vector<int>& globalId,
+                                  const std::vector<int>& destination)
+{
+    if (ghostCount_ > 0)
+    {
+        throw std::logic_error("ParticleExchange::migrate: remove the ghosts first");
+    }
+    const std::size_t n = fields.size();
+    if (globalId.size() != n || destination.size() != n)
+    {
+        throw std::logic_error("ParticleExchange::migrate: one id and destination per particle");
+    }
+    std::vector<Rows> toEach(static_cast<std::size_t>(comm_.size()));
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        if (destination[a] < 0 || destination[a] >= comm_.size())
+        {
+            throw std::logic_error("ParticleExchange::migrate: no rank " +
+                                   std::to_string(destination[a]));
+        }
+        appendRow(fields, a, globalId[a], toEach[static_cast<std::size_t>(destination[a])]);
+    }
+    countSent(toEach);
+    const std::vector<Rows> received = comm_.exchange(toEach);
+    toEach.clear();
+    Rows rows;
+    for (const Rows& from : received)
+    {
+        rows.insert(rows.end(), from.begin(), from.end());
+    }
+    std::vector<std::size_t> origin;
+    replaceBy(fields, rows, origin);
+    owned_.clear();
+    sendTo_.clear();
+    receiveAt_.clear();
+    ownedCount_ = fields.size();
+}
+
+template <int D>
+void ParticleExchange<D>::addGhosts(ParticleFields<D>& fields, const std::vector<Vec<D>>& x,
+                                    const std::vector<int>& globalId, double width)
+{
+    removeGhosts(fields);
+    const std::size_t n = fields.size();
+    if (x.size() != n || globalId.size() != n)
+    {
+        throw std::logic_error("ParticleExchange::addGhosts: one position and id per particle");
+    }
+    // Every rank's box around its owned particles (an empty rank's box is empty: lo > hi).
+    std::vector<double> box(2 * D);
+    for (int d = 0; d < D; ++d)
+    {
+        box[d] = std::numeric_limits<double>::infinity();
+        box[D + d] = -std::numeric_limits<double>::infinity();
+    }
+    for (const Vec<D>& p : x)
+    {
+        for (int d = 0; d < D; ++d)
+        {
+            box[d] = std::min(box[d], p[d]);
+            box[D + d] = std::max(box[D + d], p[d]);
+        }
+    }
+    const std::vector<double> boxes = comm_.gather(box);
+    const auto ranks = static_cast<std::size_t>(comm_.size());
+    const auto me = static_cast<std::size_t>(comm_.rank());
+
+    sendTo_.assign(ranks, {});
+    std::vector<Rows> toEach(ranks);
+    for (std::size_t r = 0; r < ranks; ++r)
+    {
+        const double* lo = &boxes[r * 2 * D];
+        const double* hi = lo + D;
+        if (r == me || lo[0] > hi[0])
+        {
+            continue;
+        }
+        for (std::size_t a = 0; a < n; ++a)
+        {
+            double distance2 = 0.0;
+            for (int d = 0; d < D; ++d)
+            {
+                const double outside = std::max({0.0, lo[d] - x[a][d], x[a][d] - hi[d]});
+                distance2 += outside * outside;
+            }
+            if (distance2 <= width * width)
+            {
+                sendTo_[r].push_back(a);
+                appendRow(fields, a, globalId[a], toEach[r]);
+            }
+        }
+    }
+    countSent(toEach);
+    const std::vector<Rows> received = comm_.exchange(toEach);
+    toEach.clear();
+
+    // This rank's own rows first (row a = owned particle a), then each rank's ghosts in turn.
+    Rows rows;
+    rows.reserve((n + 1) * rowWidth(fields));
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        appendRow(fields, a, globalId[a], rows);
+    }
+    std::vector<std::size_t> firstRowOf(ranks + 1, n);
+    const std::size_t widthOfRow = rowWidth(fields);
+    for (std::size_t r = 0; r < ranks; ++r)
+    {
+        firstRowOf[r] = rows.size() / widthOfRow;
+        rows.insert(rows.end(), received[r].begin(), received[r].end());
+    }
+    firstRowOf[ranks] = rows.size() / widthOfRow;
+    std::vector<std::size_t> origin;
+    replaceBy(fields, rows, origin);
+
+    // Where each row landed: the owned particles' new indices and the ghosts' slots.
+    std::vector<std::size_t> localOfRow(origin.size());
+    for (std::size_t k = 0; k < origin.size(); ++k)
+    {
+        localOfRow[origin[k]] = k;
+    }
+    owned_.assign(origin.size(), 0);
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        owned_[localOfRow[a]] = 1;
+    }
+    for (auto& list : sendTo_)
+    {
+        for (std::size_t& a : list)
+        {
+            a = localOfRow[a];
+        }
+    }
+    receiveAt_.assign(ranks, {});
+    for (std::size_t r = 0; r < ranks; ++r)
+    {
+        for (std::size_t row = firstRowOf[r]; row < firstRowOf[r + 1]; ++row)
+        {
+            receiveAt_[r].push_back(localOfRow[row]);
+        }
+    }
+    ownedCount_ = n;
+    ghostCount_ = origin.size() - n;
+}
+
+template <int D>
+void ParticleExchange<D>::updateGhosts(ParticleFields<D>& fields,
+                                       const std::vector<std::string>& names)
+{
+    std::vector<FieldArray*> arrays;
+    std::vector<int> components;
+    for (const std::string& name : names)
+    {
+        auto found = std::find_if(fields.all().begin(), fields.all().end(),
+                                  [&](const auto& field) { return field.spec.name() == name; });
+        if (found == fields.all().end() || !found->array->stored())
+        {
+            throw std::logic_error("ParticleExchange::updateGhosts: no stored field '" + name + "'");
+        }
+        arrays.push_back(found->array.get());
+        components.push_back(found->components());
+    }
+    const auto ranks = static_cast<std::size_t>(comm_.size());
+    std::vector<Rows> toEach(ranks);
+    double value[D * D * D];
+    for (std::size_t r = 0; r < sendTo_.size(); ++r)
+    {
+        for (const std::size_t a : sendTo_[r])
+        {
+            for (std::size_t f = 0; f < arrays.size(); ++f)
+            {
+                arrays[f]->get(a, value);
+                toEach[r].insert(toEach[r].end(), value, value + components[f]);
+            }
+        }
+    }
+    countSent(toEach);
+    const std::vector<Rows> received = comm_.exchange(toEach);
+    const std::size_t perParticle = std::accumulate(components.begin(), components.end(), std::size_t{0});
+    for (std::size_t r = 0; r < receiveAt_.size(); ++r)
+    {
+        if (received[r].size() != receiveAt_[r].size() * perParticle)
+        {
+            throw std::logic_error("ParticleExchange::updateGhosts: ranks disagree on the ghosts");
+        }
+        const double* in = received[r].data();
+        for (const std::size_t slot : receiveAt_[r])
+        {
+            for (std::size_t f = 0; f < arrays.size(); ++f)
+            {
+                arrays[f]->set(slot, in);
+                in += components[f];
+            }
+        }
+    }
+}
+
+template <int D>
+void ParticleExchange<D>::removeGhosts(ParticleFields<D>& fields)
+{
+    if (ghostCount_ == 0)
+    {
+        owned_.clear();
+        sendTo_.clear();
+        receiveAt_.clear();
+        return;
+    }
+    // Compacts in place: an owned particle only moves down (its new index is at most its old).
+    double value[D * D * D];
+    for (auto& field : fields.all())
+    {
+        if (!field.array->stored())
+        {
+            continue;
+        }
+        std::size_t kept = 0;
+        for (std::size_t a = 0; a < owned_.size(); ++a)
+        {
+            if (owned_[a])
+            {
+                if (kept != a)
+                {
+                    field.array->get(a, value);
+                    field.array->set(kept, value);
+                }
+                ++kept;
+            }
+        }
+    }
+    fields.resize(ownedCount_);
+    owned_.clear();
+    sendTo_.clear();
+    receiveAt_.clear();
+    ghostCount_ = 0;
+}
+
+template class ParticleExchange<1>;
+template class ParticleExchange<2>;
+template class ParticleExchange<3>;
+
+} // namespace sph
