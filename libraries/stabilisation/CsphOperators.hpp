@@ -1,4 +1,3 @@
-#include <iostream>
 #pragma once
 // Building blocks shared by the CSPH schemes (spec §2-§4):
 //
@@ -17,6 +16,7 @@
 #include "stabilisation/Stabilisation.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace sph
@@ -86,6 +86,36 @@ inline std::vector<ParticleChunk> makeChunks(const std::vector<BodyRange>& bodie
     }
     return chunks;
 }
+
+// The chunks of the current body ranges, made again whenever the ranges change (not only the
+// particle count: a distributed run's local particles change at each migration, and the same
+// count may split into other ranges).
+class ChunkCache
+{
+public:
+    const std::vector<ParticleChunk>& of(const std::vector<BodyRange>& bodies)
+    {
+        bool same = bodies.size() == ranges_.size();
+        for (std::size_t b = 0; same && b < bodies.size(); ++b)
+        {
+            same = ranges_[b].first == bodies[b].begin && ranges_[b].second == bodies[b].end;
+        }
+        if (!same)
+        {
+            chunks_ = makeChunks(bodies);
+            ranges_.clear();
+            for (const BodyRange& range : bodies)
+            {
+                ranges_.emplace_back(range.begin, range.end);
+            }
+        }
+        return chunks_;
+    }
+
+private:
+    std::vector<ParticleChunk> chunks_;
+    std::vector<std::pair<std::size_t, std::size_t>> ranges_;
+};
 
 // Per-chunk partial results, combined in chunk order (independent of the thread count).
 struct ChunkTally
@@ -201,18 +231,15 @@ public:
         {
             fOut->resize(n);
         }
-        if (chunks_.empty() || chunks_.back().end != n)
-        {
-            chunks_ = makeChunks(in.bodies);
-        }
-        std::vector<ChunkTally> tallies(chunks_.size());
+        const std::vector<ParticleChunk>& chunks = chunkCache_.of(in.bodies);
+        std::vector<ChunkTally> tallies(chunks.size());
 #pragma omp parallel if (useThreads(n))
         {
             std::vector<double> psi;
 #pragma omp for schedule(static)
-            for (std::size_t i = 0; i < chunks_.size(); ++i)
+            for (std::size_t i = 0; i < chunks.size(); ++i)
             {
-                const ParticleChunk& chunk = chunks_[i];
+                const ParticleChunk& chunk = chunks[i];
                 ChunkTally& tally = tallies[i];
                 for (std::size_t a = chunk.begin; a < chunk.end; ++a)
                 {
@@ -253,8 +280,6 @@ public:
         }
         ForceStatus status = combine(tallies);
         checkForces<D>(out.T, status);
-        if (!status.ok() && status.failure == FailureKind::nonFiniteForce) { auto c = status.badParticle; const auto& list = in.ref.neighbours;
-            for (std::size_t k = list.begin(c); k < list.end(c); ++k) { auto b = list.indices[k]; std::cerr << "DBG " << b << " F " << out.F[b].reshaped().transpose() << " P " << out.P[b].reshaped().transpose() << " L " << gradients.L(b).reshaped().transpose() << " Fr " << in.ref.F[b].reshaped().transpose() << "\n"; } }
         return status;
     }
 
@@ -281,7 +306,7 @@ public:
 
 private:
     std::vector<Mat<D>> UL_; // V0_a P_a F^r_a^T L_a
-    std::vector<ParticleChunk> chunks_;
+    ChunkCache chunkCache_;
 };
 
 } // namespace sph

@@ -241,22 +241,19 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
     UL_.resize(n);
     Cw_.resize(n);
     selfTerm_.resize(n);
-    if (chunks_.empty() || chunks_.back().end != n)
-    {
-        chunks_ = makeChunks(in.bodies);
-    }
+    const std::vector<ParticleChunk>& chunks = chunkCache_.of(in.bodies);
     const bool carriesK = !ref.K.empty();
     samples_.follow(list, in.body, in.materials);
     sampleDissipation_.resize(n);
-    std::vector<ChunkTally> tallies(chunks_.size());
+    std::vector<ChunkTally> tallies(chunks.size());
 #pragma omp parallel if (useThreads(n))
     {
         Scratch scratch;
         scratch.resize(maxNeighbours_);
 #pragma omp for schedule(static)
-        for (std::size_t i = 0; i < chunks_.size(); ++i)
+        for (std::size_t i = 0; i < chunks.size(); ++i)
         {
-            const ParticleChunk& chunk = chunks_[i];
+            const ParticleChunk& chunk = chunks[i];
             const Material<D>& material = *in.materials[chunk.body];
             ChunkTally& tally = tallies[i];
             for (std::size_t a = chunk.begin; a < chunk.end; ++a)

@@ -118,7 +118,7 @@ private:
     std::vector<Mat<D>> UL_;          // V0_a (A_a - C_a Y_a) L_a
     std::vector<MatDM> Cw_;           // V0_a C_a / Σ_e W_ae V^r_e
     std::vector<Vec<D>> selfTerm_;    // V0_a C_a s_a
-    std::vector<ParticleChunk> chunks_;
+    ChunkCache chunkCache_;
 
     // Materials with history: the samples' states and V0_a Σ_b Ŵ_ab D_b of each particle's
     // samples at the last evaluation (what its commit dissipates).
