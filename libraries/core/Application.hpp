@@ -6,6 +6,8 @@
 //   IoError           -> the file and the system's reason, exit 4 (every output already in
 //                        place is intact: io/AtomicFile)
 //   anything else     -> "internal error" with what() and a request to report it, exit 3
+// A distributed run (sphSolid -parallel) says through ErrorReporting which of its processes
+// prints what; this file stays free of MPI (core does not link the parallel library).
 
 #include <functional>
 #include <stdexcept>
@@ -22,6 +24,22 @@ public:
     explicit NumericalFailure(const std::string& message) : std::runtime_error(message) {}
 };
 
-int guardedMain(const std::function<int()>& body);
+// Who prints which error when several processes run the same case. The default is a serial
+// process: it prints every error and returns its exit code.
+struct ErrorReporting
+{
+    // InputError, NumericalFailure and IoError are collective: every rank reads the same case and
+    // meets them alike, so one process prints them and every process returns the exit code.
+    bool printsCollective = true;
+    // Put before the message of an error this process met alone (internal, out of memory), to
+    // say where it happened, e.g. "[rank 1] ".
+    std::string alonePrefix;
+    // Called with the exit code once such an error is printed: a distributed run stops every
+    // rank there (MPI_Abort), since the others would wait for this one forever. Empty: return
+    // the exit code.
+    std::function<void(int)> stopAll;
+};
+
+int guardedMain(const std::function<int()>& body, const ErrorReporting& reporting = {});
 
 } // namespace sph

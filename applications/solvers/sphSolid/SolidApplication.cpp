@@ -6,6 +6,7 @@
 #include "core/InputError.hpp"
 #include "core/LibraryLoader.hpp"
 #include "core/ModelListing.hpp"
+#include "parallel/Communicator.hpp"
 #include "solver/CaseSettings.hpp"
 #include "solver/ParticleFile.hpp"
 #include "solver/Simulation.hpp"
@@ -19,6 +20,23 @@ namespace sph
 
 namespace
 {
+
+// The distributed time loop is not built yet (issue 14): N ranks would run N copies of the case,
+// each writing the same files, so a real run stops; dry runs and one rank are fine. Every rank
+// throws it alike (a collective error: rank 0 prints it).
+void requireOneRank(const Communicator& world)
+{
+    if (world.size() > 1)
+    {
+        throw InputError("running on more than one rank (here " + std::to_string(world.size()) +
+                             ") is not available yet in this version of sphSolid",
+                         {"The distributed time loop is still being built. Check the case on "
+                          "every rank with -dryRun (mpirun -np " +
+                              std::to_string(world.size()) +
+                              " sphSolid -parallel -dryRun), or run it on one rank (mpirun -np 1 "
+                              "sphSolid -parallel, or sphSolid alone)."});
+    }
+}
 
 template <int D>
 int runDimension(const CaseDictionaries& dicts, const ControlSettings& control,
@@ -53,6 +71,7 @@ int runDimension(const CaseDictionaries& dicts, const ControlSettings& control,
         log.line("Dry run: every dictionary is valid and every model was built; not running.");
         return 0;
     }
+    requireOneRank(Communicator::world());
     log.line("");
     simulation.run(log);
     return 0;
@@ -65,7 +84,8 @@ int sphSolidMain(int argc, const char* const* argv)
     CommandLine commandLine("sphSolid", "SPH for elastic and hyperelastic solids: runs a case");
     commandLine.options().add_options()(
         "threads", boost::program_options::value<int>()->value_name("N"),
-        "number of OpenMP threads (default: OMP_NUM_THREADS or all cores)");
+        "number of OpenMP threads (default: OMP_NUM_THREADS or all cores)")(
+        "parallel", "run on the MPI ranks of mpirun (mpirun -np N sphSolid -parallel)");
     if (!commandLine.parse(argc, argv))
     {
         return 0;
@@ -100,6 +120,10 @@ int sphSolidMain(int argc, const char* const* argv)
     dicts.applySets(commandLine.sets());
     std::cout << "sphSolid " << projectVersion() << "  (" << commandLine.invocation() << ")\n"
               << "Threads     " << omp_get_max_threads() << "\n";
+    if (commandLine.values().count("parallel"))
+    {
+        std::cout << "Ranks       " << Communicator::world().size() << "\n";
+    }
     const ControlSettings control = ControlSettings::read(dicts);
     loadCaseLibraries(control, dicts.caseDir());
     const SchemeSettings schemes = SchemeSettings::read(dicts.get("sphSchemes"));

@@ -1,0 +1,121 @@
+#!/usr/bin/env bash
+# Runs sphSolid under `mpirun -np RANKS sphSolid -parallel` on a copy of a case and checks one
+# thing against the serial run (tests/parallel/solverRuns.cmake adds the tests).
+# Usage: runSolver.sh MPIEXEC BIN_DIR CASE_DIR RANKS CHECK [sphSolid arguments...]
+#   sameError     the serial run fails with exit 1; the parallel run exits 1 with the serial
+#                 run's message (its stderr) exactly once in stdout+stderr
+#   dryRunOnce    -dryRun: exit 0, the header and the "Dry run" line once, "Ranks  RANKS"
+#   sameResults   exit 0 both, and VTK/ and postProcessing/*/*.dat identical (cmp) to serial
+#   notAvailable  exit 1 with the one "not available yet" message; nothing written to VTK/
+# The case is copied into a temporary folder (never written in place). -parallel goes last, so
+# columns in messages about the command line are those of the serial run.
+set -u
+mpiexec=$1
+bin=$2
+case=$3
+ranks=$4
+check=$5
+shift 5
+name=$(basename "$case")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+status=0
+
+fail()
+{
+    echo "FAIL: $*"
+    status=1
+}
+
+# How many times $2 occurs in $1.
+occurrences()
+{
+    local text=$1 count=0
+    [ -z "$2" ] && { echo 0; return; }
+    while [[ "$text" == *"$2"* ]]; do
+        text=${text#*"$2"}
+        count=$((count + 1))
+    done
+    echo "$count"
+}
+
+expectCode()
+{
+    [ "$1" = "$2" ] || fail "$3 exited with $1, expected $2"
+}
+
+expectOnce()
+{
+    local count
+    count=$(occurrences "$output" "$1")
+    [ "$count" = 1 ] || fail "found $count times in the parallel output (expected once): $1"
+}
+
+# The serial run in serial/NAME, its stdout and stderr apart (serialOut, serialErr, serialCode).
+runSerial()
+{
+    mkdir -p "$work/serial" && cp -r "$case" "$work/serial/$name"
+    (cd "$work/serial/$name" && "$bin/sphSolid" -case . "$@" >"$work/serial.out" 2>"$work/serial.err")
+    serialCode=$?
+    serialErr=$(cat "$work/serial.err")
+}
+
+# The parallel run in parallel/NAME, stdout and stderr together in output (as a user sees it).
+runParallel()
+{
+    mkdir -p "$work/parallel" && cp -r "$case" "$work/parallel/$name"
+    output=$(cd "$work/parallel/$name" &&
+        "$mpiexec" --oversubscribe -np "$ranks" "$bin/sphSolid" -case . "$@" -parallel 2>&1)
+    code=$?
+    echo "$output"
+    echo "--- exit code $code"
+    if echo "$output" | grep -qE "Segmentation|terminate called|core dumped|MPI_ABORT"; then
+        fail "a rank crashed or aborted instead of reporting the error"
+    fi
+}
+
+case $check in
+sameError)
+    runSerial "$@"
+    runParallel "$@"
+    expectCode "$serialCode" 1 "the serial run"
+    expectCode "$code" 1 "the parallel run"
+    [ -n "$serialErr" ] || fail "the serial run printed no error"
+    expectOnce "$serialErr"
+    expectOnce "FATAL"
+    ;;
+dryRunOnce)
+    runParallel -dryRun "$@"
+    expectCode "$code" 0 "the parallel dry run"
+    expectOnce "Dry run: every dictionary is valid and every model was built; not running."
+    expectOnce "Threads     "
+    expectOnce "Ranks       $ranks"
+    ;;
+sameResults)
+    runSerial "$@"
+    runParallel "$@"
+    expectCode "$serialCode" 0 "the serial run"
+    expectCode "$code" 0 "the parallel run"
+    expectOnce $'\nEnd: ' # the last line of a run
+    serialFiles=$(cd "$work/serial/$name" && find VTK postProcessing -name "*.vtu" -o -name "*.pvd" -o -name "*.dat" | sort)
+    parallelFiles=$(cd "$work/parallel/$name" && find VTK postProcessing -name "*.vtu" -o -name "*.pvd" -o -name "*.dat" | sort)
+    [ -n "$serialFiles" ] || fail "the serial run wrote no output"
+    [ "$serialFiles" = "$parallelFiles" ] || fail "different files: serial ($serialFiles) parallel ($parallelFiles)"
+    for file in $serialFiles; do
+        cmp "$work/serial/$name/$file" "$work/parallel/$name/$file" || fail "$file differs"
+    done
+    echo "compared $(echo "$serialFiles" | wc -l) files"
+    ;;
+notAvailable)
+    runParallel "$@"
+    expectCode "$code" 1 "the parallel run"
+    expectOnce "--> sphSolid FATAL INPUT ERROR"
+    expectOnce "running on more than one rank (here $ranks) is not available yet in this version of sphSolid"
+    [ ! -e "$work/parallel/$name/VTK" ] || fail "the run wrote VTK/"
+    ;;
+*)
+    echo "runSolver.sh: unknown check '$check'" >&2
+    exit 2
+    ;;
+esac
+exit $status
