@@ -160,9 +160,11 @@ inline bool admissible(const Mat<D>& F, double& J)
     return J > 0.0 && std::isfinite(J);
 }
 
-// Flags the first particle whose force is not finite.
+// Flags the first particle (of those that count, see ForceInput::owned) whose force is not
+// finite.
 template <int D>
-void checkForces(const std::vector<Vec<D>>& T, ForceStatus& status)
+void checkForces(const std::vector<Vec<D>>& T, ForceStatus& status,
+                 const std::vector<std::uint8_t>* owned = nullptr)
 {
     if (!status.ok())
     {
@@ -170,7 +172,7 @@ void checkForces(const std::vector<Vec<D>>& T, ForceStatus& status)
     }
     for (std::size_t c = 0; c < T.size(); ++c)
     {
-        if (!T[c].allFinite())
+        if (!T[c].allFinite() && (!owned || (*owned)[c]))
         {
             status = ForceStatus::failed(FailureKind::nonFiniteForce, static_cast<long>(c),
                                          T[c].norm(), "internal force");
@@ -254,7 +256,10 @@ public:
                     double J;
                     if (!admissible<D>(out.F[a], J))
                     {
-                        tally.flagJacobian(a, J);
+                        if (in.counts(a))
+                        {
+                            tally.flagJacobian(a, J);
+                        }
                         out.F[a].setIdentity(); // keep the arithmetic finite; the run stops
                     }
                 }
@@ -266,7 +271,7 @@ public:
                 for (std::size_t a = chunk.begin; a < chunk.end; ++a)
                 {
                     UL_[a] = in.V0[a] * out.P[a] * in.ref.F[a].transpose() * gradients.L(a);
-                    if (wantEnergy)
+                    if (wantEnergy && in.counts(a))
                     {
                         tally.energy += in.V0[a] * psi[a - chunk.begin];
                     }
@@ -279,7 +284,7 @@ public:
             }
         }
         ForceStatus status = combine(tallies);
-        checkForces<D>(out.T, status);
+        checkForces<D>(out.T, status, in.owned);
         return status;
     }
 

@@ -38,6 +38,11 @@ struct ForceInput
     // x is the reference configuration itself (bitwise; the reference was set from these
     // positions this step), so f = I and ∇f = 0 exactly and need not be computed.
     bool atReference = false;
+    // A distributed run's owned particles (1) and ghosts (0). Only owned particles count in the
+    // strain energy and the failure checks: a ghost's neighbourhood is cut at the edge of the
+    // ghost layer, and its owner checks it. Null: every particle counts (a serial run).
+    const std::vector<std::uint8_t>* owned = nullptr;
+    bool counts(std::size_t a) const { return !owned || (*owned)[a] != 0; }
 };
 
 // What a force evaluation writes.

@@ -262,7 +262,10 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 double J;
                 if (!admissible<D>(kin.F, J))
                 {
-                    tally.flagJacobian(a, J);
+                    if (in.counts(a))
+                    {
+                        tally.flagJacobian(a, J);
+                    }
                     kin.F.setIdentity(); // keep the arithmetic finite; the run stops
                     kin.G = Tensor3<D>::zero();
                 }
@@ -303,7 +306,10 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                         energy += w * scratch.psi[j];
                     }
                 }
-                tally.energy += in.V0[a] * energy;
+                if (in.counts(a))
+                {
+                    tally.energy += in.V0[a] * energy;
+                }
                 // A = S F^r^T + Q:K,  B[k] = Q[k] F^r^T,  C = B~ Z^{-1},  Ã = A - C Y
                 const Mat<D> FrT = ref.F[a].transpose();
                 Mat<D> A = S * FrT;
@@ -340,7 +346,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
         }
     }
     ForceStatus status = combine(tallies);
-    checkForces<D>(out.T, status);
+    checkForces<D>(out.T, status, in.owned);
     return status;
 }
 

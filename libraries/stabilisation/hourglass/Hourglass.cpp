@@ -71,7 +71,7 @@ ForceStatus Hourglass<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>&
     {
         out.T[a] += hourglassForce(a, in, f_);
     }
-    checkForces<D>(out.T, status);
+    checkForces<D>(out.T, status, in.owned);
     return status;
 }
 

@@ -211,6 +211,57 @@ void checkParticleDeformationGradient(const std::string& name, bool updated)
     }
 }
 
+// A distributed run's ghosts (ForceInput::owned = 0) count in neither the strain energy nor the
+// failure checks: the energies of complementary masks add up to the whole, and a particle with
+// det F <= 0 is reported only while it is owned.
+template <int D>
+void checkOwnedParticles(const std::string& name, bool updated)
+{
+    INFO(name << (updated ? " UL" : " TL") << " " << D << "D, owned particles only");
+    test::SchemeFixture<D> fixture(test::schemeCloud<D>(), test::schemeText<D>(name), kMaterial, updated, test::schemeHOverDx<D>());
+    const std::size_t n = fixture.X.size();
+    const auto energyOf = [&](const std::vector<Vec<D>>& x, const std::vector<std::uint8_t>* owned) {
+        std::vector<Vec<D>> T;
+        std::vector<Mat<D>> F;
+        std::vector<Mat<D>> P;
+        ForceOutput<D> out{T, F, P};
+        ForceInput<D> in = fixture.input(x);
+        in.owned = owned;
+        return fixture.scheme->computeForces(in, out, true);
+    };
+    const auto x = test::deformCurrent<D>(fixture.ref.x, 7);
+    std::vector<std::uint8_t> firstHalf(n, 0), secondHalf(n, 1);
+    for (std::size_t a = 0; a < n / 2; ++a)
+    {
+        firstHalf[a] = 1;
+        secondHalf[a] = 0;
+    }
+    const ForceStatus all = energyOf(x, nullptr);
+    const ForceStatus first = energyOf(x, &firstHalf);
+    const ForceStatus second = energyOf(x, &secondHalf);
+    REQUIRE(all.ok());
+    CHECK(first.strainEnergy != 0.0);
+    CHECK(second.strainEnergy != 0.0);
+    CHECK(std::abs(first.strainEnergy + second.strainEnergy - all.strainEnergy) <=
+          1e-12 * std::abs(all.strainEnergy));
+
+    // Mirrored, every particle has det F < 0: the first owned one is reported, and none when
+    // every particle is a ghost.
+    auto mirrored = x;
+    for (auto& p : mirrored)
+    {
+        p[0] = -p[0];
+    }
+    CHECK(energyOf(mirrored, nullptr).badParticle == 0);
+    std::vector<std::uint8_t> one(n, 0);
+    one[n / 3] = 1;
+    const ForceStatus onlyOne = energyOf(mirrored, &one);
+    CHECK(onlyOne.failure == FailureKind::nonPositiveJacobian);
+    CHECK(onlyOne.badParticle == static_cast<long>(n / 3));
+    const std::vector<std::uint8_t> none(n, 0);
+    CHECK(energyOf(mirrored, &none).ok());
+}
+
 template <int D>
 void checkAllSchemes()
 {
@@ -224,6 +275,7 @@ void checkAllSchemes()
             checkForces<D>(name, updated);
             checkRigidMotion<D>(name, updated);
             checkParticleDeformationGradient<D>(name, updated);
+            checkOwnedParticles<D>(name, updated);
         }
     }
 }
