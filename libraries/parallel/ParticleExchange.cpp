@@ -289,25 +289,36 @@ void ParticleExchange<D>::updateGhosts(ParticleFields<D>& fields,
 template <int D>
 void ParticleExchange<D>::removeGhosts(ParticleFields<D>& fields)
 {
-    if (ghostCount_ == 0)
+    if (ghostCount_ > 0)
     {
-        owned_.clear();
-        sendTo_.clear();
-        receiveAt_.clear();
-        return;
+        keepOnly(fields, owned_);
     }
-    // Compacts in place: an owned particle only moves down (its new index is at most its old).
+    owned_.clear();
+    sendTo_.clear();
+    receiveAt_.clear();
+    ghostCount_ = 0;
+}
+
+template <int D>
+void ParticleExchange<D>::keepOnly(ParticleFields<D>& fields, const std::vector<std::uint8_t>& keep)
+{
+    if (keep.size() != fields.size())
+    {
+        throw std::logic_error("ParticleExchange::keepOnly: one flag per local particle");
+    }
+    // Compacts in place: a kept particle only moves down (its new index is at most its old).
     double value[D * D * D];
+    std::size_t kept = 0;
     for (auto& field : fields.all())
     {
         if (!field.array->stored())
         {
             continue;
         }
-        std::size_t kept = 0;
-        for (std::size_t a = 0; a < owned_.size(); ++a)
+        kept = 0;
+        for (std::size_t a = 0; a < keep.size(); ++a)
         {
-            if (owned_[a])
+            if (keep[a])
             {
                 if (kept != a)
                 {
@@ -318,10 +329,13 @@ void ParticleExchange<D>::removeGhosts(ParticleFields<D>& fields)
             }
         }
     }
-    fields.resize(ownedCount_);
+    kept = static_cast<std::size_t>(std::count_if(keep.begin(), keep.end(),
+                                                   [](std::uint8_t k) { return k != 0; }));
+    fields.resize(kept);
     owned_.clear();
     sendTo_.clear();
     receiveAt_.clear();
+    ownedCount_ = kept;
     ghostCount_ = 0;
 }
 

@@ -61,6 +61,16 @@ public:
     // Drops the ghosts: the local particles are the owned ones again, in the same order.
     void removeGhosts(ParticleFields<D>& fields);
 
+    // Keeps the local particles with keep[a] != 0, in the same order, as this rank's owned ones
+    // (e.g. a share of a set every rank read whole, before the first migrate). No ghosts.
+    void keepOnly(ParticleFields<D>& fields, const std::vector<std::uint8_t>& keep);
+
+    // Per local particle: 1 owned, 0 ghost (all ones without ghosts).
+    std::vector<std::uint8_t> ownedMask(std::size_t localCount) const
+    {
+        return owned_.empty() ? std::vector<std::uint8_t>(localCount, 1) : owned_;
+    }
+
     bool owned(std::size_t a) const { return owned_.empty() || owned_[a] != 0; }
     std::size_t ownedCount() const { return ownedCount_; }
     std::size_t ghostCount() const { return ghostCount_; }

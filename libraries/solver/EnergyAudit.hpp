@@ -18,6 +18,8 @@
 #include "functionObjects/FunctionObject.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,14 @@ template <int D>
 class EnergyAudit
 {
 public:
+    // A distributed run: only the owned particles count (a ghost is counted by its owner), and
+    // each sum is completed over the ranks by `total` (in rank order: the same bits on every
+    // rank). The mask is read at each sum (the run changes it as particles migrate).
+    void countOwned(const std::vector<std::uint8_t>* owned, std::function<double(double)> total)
+    {
+        owned_ = owned;
+        total_ = std::move(total);
+    }
     void declareState(RunScalars& scalars, const std::vector<std::string>& wallNames = {})
     {
         scalars.bind("externalWork", external_);
@@ -84,9 +94,9 @@ public:
         double work = 0.0;
         for (std::size_t a = 0; a < m.size(); ++a)
         {
-            work += m[a] * g.dot(xNew[a] - xOld[a]);
+            work += counts(a) ? m[a] * g.dot(xNew[a] - xOld[a]) : 0.0;
         }
-        external_ += work;
+        external_ += total(work);
     }
 
     // Energy dissipated by a commit of the materials' history.
@@ -101,9 +111,9 @@ public:
         double work = 0.0;
         for (std::size_t a = 0; a < m.size(); ++a)
         {
-            work += m[a] * deltaV[a].dot(vAfter[a] - 0.5 * deltaV[a]);
+            work += counts(a) ? m[a] * deltaV[a].dot(vAfter[a] - 0.5 * deltaV[a]) : 0.0;
         }
-        contact_ += work;
+        contact_ += total(work);
         pendingKick_ = true;
         kickDeltaT_ = dt;
     }
@@ -117,9 +127,9 @@ public:
         double work = 0.0;
         for (std::size_t a = 0; a < m.size(); ++a)
         {
-            work += m[a] * deltaV[a].dot(acceleration[a]);
+            work += counts(a) ? m[a] * deltaV[a].dot(acceleration[a]) : 0.0;
         }
-        contact_ += 0.5 * kickDeltaT_ * work;
+        contact_ += 0.5 * kickDeltaT_ * total(work);
         pendingKick_ = false;
     }
 
@@ -131,8 +141,9 @@ public:
         EnergyBalance e;
         for (std::size_t a = 0; a < m.size(); ++a)
         {
-            e.kinetic += 0.5 * m[a] * velocity[a].squaredNorm();
+            e.kinetic += counts(a) ? 0.5 * m[a] * velocity[a].squaredNorm() : 0.0;
         }
+        e.kinetic = total(e.kinetic);
         e.strain = strainEnergy;
         e.external = external_;
         e.contact = contact_;
@@ -156,17 +167,23 @@ public:
     }
 
 private:
+    bool counts(std::size_t a) const { return !owned_ || (*owned_)[a] != 0; }
+    double total(double local) const { return total_ ? total_(local) : local; }
+
     // ½ Σ m a·(x - xOld)
-    static double halfWork(const std::vector<double>& m, const std::vector<Vec<D>>& a,
-                           const std::vector<Vec<D>>& x, const std::vector<Vec<D>>& xOld)
+    double halfWork(const std::vector<double>& m, const std::vector<Vec<D>>& a,
+                    const std::vector<Vec<D>>& x, const std::vector<Vec<D>>& xOld) const
     {
         double work = 0.0;
         for (std::size_t i = 0; i < m.size(); ++i)
         {
-            work += m[i] * a[i].dot(x[i] - xOld[i]);
+            work += counts(i) ? m[i] * a[i].dot(x[i] - xOld[i]) : 0.0;
         }
-        return 0.5 * work;
+        return 0.5 * total(work);
     }
+
+    const std::vector<std::uint8_t>* owned_ = nullptr;
+    std::function<double(double)> total_;
 
     double external_ = 0.0;
     double viscous_ = 0.0;         // W_visc

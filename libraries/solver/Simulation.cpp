@@ -17,21 +17,33 @@ RunSummary Simulation<D>::run(RunLog& log)
 {
     // A run killed while writing left its temporaries (io/AtomicFile) beside the outputs:
     // nothing reads them, so they would only pile up.
-    for (const char* folder : {"VTK", "postProcessing"})
+    if (comm_.parallel())
     {
-        removeStaleTemporaries(dicts_.caseDir() / folder);
+        checkDistributable(); // before any file is read or removed
+    }
+    if (comm_.rank() == 0)
+    {
+        for (const char* folder : {"VTK", "postProcessing"})
+        {
+            removeStaleTemporaries(dicts_.caseDir() / folder);
+        }
     }
     const bool restarted = control_.startFromLatest && restoreLatest(log);
     if (!restarted)
     {
         removeOldOutput();
     }
+    if (comm_.parallel())
+    {
+        comm_.barrier(); // rank 0 has cleared the old output
+        distribute();
+    }
     for (auto& object : functionObjects_)
     {
         object->start(time_, restarted);
     }
     const long firstStep = step_;
-    log.startTimer(time_, control_.endTime, particles_.size());
+    log.startTimer(time_, control_.endTime, distributed() ? globalCount_ : particles_.size());
     try
     {
         advance(log, restarted);
@@ -50,6 +62,7 @@ RunSummary Simulation<D>::run(RunLog& log)
     }
     const RunSummary summary = log.finish(step_ - firstStep, time_);
     writeSummary(summary, "");
+    comm_.barrier(); // no rank leaves before the output is complete
     return summary;
 }
 
@@ -60,7 +73,10 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
     while (true)
     {
         const bool atReference = moveReference(firstStep);
-        const bool progress = log.progressDue();
+        // The progress line is due by the wall clock, which each rank reads differently; the
+        // energy sums it triggers are collective, so the ranks agree first.
+        const bool progress = distributed() ? comm_.maximum(log.progressDue() ? 1.0 : 0.0) > 0.0
+                                            : log.progressDue();
         const bool wantEnergy = progress || energyWanted(firstStep);
         const ForceStatus forces = computeForces(atReference, wantEnergy);
         computeViscosity();
@@ -92,6 +108,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         drift(dt);
         applyContact(dt);
         checkOrder(dt);
+        refreshAllGhosts();
         time_ = step.landsOnTarget ? step.target : time_ + dt;
         ++step_;
     }
@@ -191,9 +208,10 @@ bool Simulation<D>::moveReference(long firstStep)
 {
     ForceStatus status;
     const bool moved = reference_->updateIfDue(step_, particles_, status);
-    if (!status.ok())
+    checkStatus(status, "moving the reference configuration");
+    if (moved && distributed())
     {
-        fail(status, "moving the reference configuration");
+        regather(); // the neighbours are searched in the new x^r
     }
     const ReferenceConfiguration<D>& ref = reference_->reference();
     return moved || (step_ == firstStep && ref.updateStep == step_ && ref.x == particles_.x);
@@ -216,14 +234,21 @@ ForceStatus Simulation<D>::computeForces(bool atReference, bool wantEnergy)
 {
     ForceInput<D> in{particles_.x, particles_.V0, particles_.body, particles_.bodies,
                      materials_, reference_->reference(), atReference};
+    in.owned = distributed() ? &owned_ : nullptr;
     ForceOutput<D> out{acceleration_, nextF_, nextP_};
-    const ForceStatus status = scheme_->computeForces(in, out, wantEnergy);
-    if (!status.ok())
-    {
-        fail(status, "computing the internal forces");
-    }
+    ForceStatus status = scheme_->computeForces(in, out, wantEnergy);
+    checkStatus(status, "computing the internal forces");
     particles_.F.swap(nextF_);
     particles_.P.swap(nextP_);
+    if (distributed())
+    {
+        // The time step reads F: the owners' values, not those of ghosts cut at the layer's edge.
+        refreshGhosts({"deformationGradient", "firstPiolaKirchhoffStress"});
+        if (wantEnergy)
+        {
+            status.strainEnergy = comm_.sum(status.strainEnergy);
+        }
+    }
     return status;
 }
 
@@ -285,10 +310,7 @@ template <int D>
 void Simulation<D>::chooseTimeStep(bool freshStart, bool firstLevel)
 {
     const ForceStatus status = integrator_->chooseTimeStep(step_, freshStart, waveSpeedBound());
-    if (!status.ok())
-    {
-        fail(status, "computing the time step");
-    }
+    checkStatus(status, "computing the time step");
     if (firstLevel)
     {
         checkRunLength(integrator_->deltaT());

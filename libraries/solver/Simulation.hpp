@@ -29,6 +29,7 @@
 #include "formulations/ReferenceManager.hpp"
 #include "functionObjects/FunctionObject.hpp"
 #include "io/PvdSeries.hpp"
+#include "parallel/ParticleExchange.hpp"
 #include "solver/CaseSettings.hpp"
 #include "solver/EnergyAudit.hpp"
 #include "solver/ParticleFile.hpp"
@@ -119,8 +120,27 @@ private:
     WaveSpeedBound waveSpeedBound() const;
     double waveSpeedOf(std::size_t b, std::size_t first, std::size_t n) const;
     [[noreturn]] void fail(const ForceStatus& status, const std::string& when);
+    std::string describeFailure(const ForceStatus& status, const std::string& when) const;
+    // Writes the last good level and throws NumericalFailure with the diagnosis.
+    [[noreturn]] void failWith(const std::string& diagnosis);
     long crossingParticle() const;
     std::string particleName(std::size_t a) const;
+
+    // SimulationDistributed.cpp: a run on several ranks (sphSolid -parallel; docs/parallel.md)
+    bool distributed() const { return exchange_ != nullptr; }
+    void checkDistributable() const;   // the models a distributed run supports, else InputError
+    void distribute();                 // every rank's whole set -> owned particles + ghosts
+    void regather();                   // new ghosts around the owned particles (after a move of
+                                       //   the reference configuration)
+    void localParticlesChanged();      // body ranges, owned mask, reference data of the new set
+    void refreshGhosts(const std::vector<std::string>& names); // owners' values -> ghosts
+    void refreshAllGhosts();           // every stored field
+    // Fails when the status does (distributed: when any rank's does, with the diagnosis of the
+    // failing particle of least global index, on every rank).
+    void checkStatus(const ForceStatus& status, const std::string& when);
+    double ghostWidth() const;         // how far from its owned particles a rank needs ghosts
+    long globalIndex(std::size_t a) const; // the particle's index in the whole set
+    void writePieces(const VtuData& data, double time); // this rank's piece (+ .pvtu on rank 0)
 
     // SimulationOutput.cpp
     // Declares every per-particle field and run scalar of the solver itself (the models
@@ -176,6 +196,15 @@ private:
     std::vector<Mat<D>> nextP_;
 
     PvdSeries pvd_;
+
+    // A distributed run (null/empty in a serial one): the ranks, the owned and ghost particles,
+    // each local particle's index in the whole set, and which local particles this rank owns.
+    Communicator comm_ = Communicator::world();
+    std::unique_ptr<ParticleExchange<D>> exchange_;
+    std::vector<int> globalId_;
+    std::vector<std::uint8_t> owned_;
+    std::size_t globalCount_ = 0; // particles in the whole set
+    std::string lastOutputFile_;  // in VTK/, the last output written (.vtu or .pvtu)
 };
 
 } // namespace sph

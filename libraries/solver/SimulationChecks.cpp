@@ -75,7 +75,11 @@ WaveSpeedBound Simulation<D>::waveSpeedBound() const
     };
     // An artificial viscosity raises the speed that bounds the step (Monaghan 1992, §10).
     return {kernel_->h(),
-            [this, fastestBody] { return viscosity_->signalSpeed(fastestBody().first); },
+            [this, fastestBody] {
+                // Distributed: the fastest of every rank (exact: a maximum), so every rank
+                // takes the serial run's step.
+                return comm_.maximum(viscosity_->signalSpeed(fastestBody().first));
+            },
             fastestParticle};
 }
 
@@ -119,6 +123,13 @@ long Simulation<D>::crossingParticle() const
 template <int D>
 void Simulation<D>::fail(const ForceStatus& status, const std::string& when)
 {
+    checkStatus(status, when);
+    throw std::logic_error("Simulation::fail called with a good state");
+}
+
+template <int D>
+std::string Simulation<D>::describeFailure(const ForceStatus& status, const std::string& when) const
+{
     std::ostringstream message;
     message << status.message;
     if (status.failure == FailureKind::nonPositiveJacobian)
@@ -131,26 +142,32 @@ void Simulation<D>::fail(const ForceStatus& status, const std::string& when)
     }
     message << " at " << particleName(static_cast<std::size_t>(status.badParticle)) << ", step "
             << step_ << ", t = " << time_ << " s, " << when << ".";
+    return message.str();
+}
+
+template <int D>
+void Simulation<D>::failWith(const std::string& diagnosis)
+{
     std::string written;
     if (lastGood_.step >= 0)
     {
         writeOutput(lastGood_, {});
         written = "The last good state (step " + std::to_string(lastGood_.step) + ", t = " +
-                  std::to_string(lastGood_.time) + " s) is written to " +
-                  pvd_.entries().back().file + " (listed in VTK/" + caseName_ + ".pvd).";
+                  std::to_string(lastGood_.time) + " s) is written to " + lastOutputFile_ +
+                  " (listed in VTK/" + caseName_ + ".pvd).";
     }
-    message << "\n" << written
-            << "\nLikely causes: the scheme is unstable for this problem (try stabilisation gradF "
-               "or formulation totalLagrangian), the time step is too large (lower courant), or "
-               "the deformation is beyond the material model.";
-    throw NumericalFailure(message.str());
+    throw NumericalFailure(diagnosis + "\n" + written +
+                           "\nLikely causes: the scheme is unstable for this problem (try "
+                           "stabilisation gradF or formulation totalLagrangian), the time step is "
+                           "too large (lower courant), or the deformation is beyond the material "
+                           "model.");
 }
 
 template <int D>
 std::string Simulation<D>::particleName(std::size_t a) const
 {
     std::ostringstream out;
-    out << "particle " << a;
+    out << "particle " << (a < particles_.size() ? globalIndex(a) : static_cast<long>(a));
     if (a < particles_.size())
     {
         out << " (body '" << bodyNames_[static_cast<std::size_t>(particles_.body[a])]

@@ -11,6 +11,7 @@
 
 #include <omp.h>
 
+#include <numeric>
 #include <optional>
 #include <sstream>
 
@@ -21,13 +22,22 @@ namespace sph
 namespace
 {
 
-// The output index of `fileName` if it is one of this case's outputs "<case>_<n>.vtu", else -1.
+// The output index of `fileName` if it is one of this case's outputs, else -1: "<case>_<n>.vtu"
+// (serial), "<case>_<n>.pvtu" and the folder "<case>_<n>" of its pieces (distributed).
 long outputIndexOf(const std::string& fileName, const std::string& caseName)
 {
     const std::string prefix = caseName + "_";
-    const std::string suffix = ".vtu";
-    if (fileName.size() <= prefix.size() + suffix.size() || fileName.rfind(prefix, 0) != 0 ||
-        fileName.compare(fileName.size() - suffix.size(), suffix.size(), suffix) != 0)
+    std::string suffix;
+    for (const char* candidate : {".vtu", ".pvtu"})
+    {
+        const std::string ending = candidate;
+        if (fileName.size() > ending.size() &&
+            fileName.compare(fileName.size() - ending.size(), ending.size(), ending) == 0)
+        {
+            suffix = ending;
+        }
+    }
+    if (fileName.size() <= prefix.size() + suffix.size() || fileName.rfind(prefix, 0) != 0)
     {
         return -1;
     }
@@ -47,10 +57,14 @@ long outputIndexOf(const std::string& fileName, const std::string& caseName)
 template <int D>
 void Simulation<D>::writeSummary(const RunSummary& summary, const std::string& failure) const
 {
+    if (comm_.rank() != 0)
+    {
+        return; // one summary, of the whole run
+    }
     nlohmann::ordered_json json;
     json["case"] = caseName_;
     json["dimension"] = D;
-    json["particles"] = particles_.size();
+    json["particles"] = distributed() ? globalCount_ : particles_.size();
     json["spacing"] = spacing_;
     json["kernel"] = kernel_->summary();
     json["hOverDx"] = kernel_->hOverDx();
@@ -66,6 +80,7 @@ void Simulation<D>::writeSummary(const RunSummary& summary, const std::string& f
     json["time"] = time_;
     json["steps"] = summary.steps;
     json["threads"] = omp_get_max_threads();
+    json["ranks"] = comm_.size();
     json["wallSeconds"] = summary.wallSeconds;
     json["particleStepsPerSecond"] = summary.particleStepsPerSecond;
     json["outputSeconds"] = summary.outputSeconds;
@@ -92,18 +107,27 @@ template <int D>
 void Simulation<D>::removeOldOutput()
 {
     const std::filesystem::path folder = dicts_.caseDir() / "VTK";
-    if (std::filesystem::is_directory(folder))
+    if (comm_.rank() == 0 && std::filesystem::is_directory(folder))
     {
+        // The outputs of a serial run (.vtu) and of a distributed one (.pvtu and its pieces).
+        std::vector<std::filesystem::path> old;
         for (const auto& file : std::filesystem::directory_iterator(folder))
         {
             if (outputIndexOf(file.path().filename().string(), caseName_) >= 0)
             {
-                std::filesystem::remove(file.path());
+                old.push_back(file.path());
             }
         }
+        for (const auto& path : old)
+        {
+            std::filesystem::remove_all(path);
+        }
     }
-    std::error_code ec;
-    std::filesystem::remove(pvd_.file(), ec);
+    if (comm_.rank() == 0)
+    {
+        std::error_code ec;
+        std::filesystem::remove(pvd_.file(), ec);
+    }
     pvd_ = PvdSeries(pvd_.file());
 }
 
@@ -199,6 +223,20 @@ void Simulation<D>::declareFields()
         audit_.declareDissipation(runScalars_);
         scheme_->declareHistory(materials_, runScalars_);
     }
+    if (comm_.parallel())
+    {
+        // A distributed run: each particle's index in constant/particles.vtu travels with it,
+        // and the pieces show which rank owns it.
+        globalId_.resize(p.size());
+        std::iota(globalId_.begin(), globalId_.end(), 0);
+        f.bind(FieldSpec::integer("globalId", "the particle's index in constant/particles.vtu")
+                   .restart()
+                   .display(),
+               globalId_);
+        f.template derive<int>(FieldSpec::integer("rank", "the MPI rank that owns the particle")
+                                   .display(),
+                               [this](std::size_t) { return comm_.rank(); });
+    }
     runScalars_.bind("outputIndex", outputIndex_);
     runScalars_.bind("nextOutputTime", outputSchedule_.next());
 }
@@ -221,21 +259,35 @@ void Simulation<D>::writeOutput(const LevelView& level, const FunctionState& fun
     }
     data.stringFields["bodyNames"] = bodyNames_;
 
-    const std::string name = caseName_ + "_" + std::to_string(outputIndex_) + ".vtu";
-    writeVtu(dicts_.caseDir() / "VTK" / name, data);
-    pvd_.add(level.time, name);
-    ++outputIndex_;
-    if (control_.purgeWrite > 0)
+    if (distributed())
     {
-        // purgeWrite N: the series drops its oldest entries first, then their files go.
+        writePieces(data, level.time);
+    }
+    else
+    {
+        const std::string name = caseName_ + "_" + std::to_string(outputIndex_) + ".vtu";
+        writeVtu(dicts_.caseDir() / "VTK" / name, data);
+        pvd_.add(level.time, name);
+        lastOutputFile_ = name;
+    }
+    ++outputIndex_;
+    if (control_.purgeWrite > 0 && comm_.rank() == 0)
+    {
+        // purgeWrite N: the series drops its oldest entries first, then their files go (a
+        // distributed output's pieces with its .pvtu).
         const auto dropped = pvd_.keepLast(static_cast<std::size_t>(control_.purgeWrite));
         if (!dropped.empty())
         {
             pvd_.write();
             for (const std::string& file : dropped)
             {
+                const std::filesystem::path path = dicts_.caseDir() / "VTK" / file;
                 std::error_code ec;
-                std::filesystem::remove(dicts_.caseDir() / "VTK" / file, ec);
+                std::filesystem::remove(path, ec);
+                if (path.extension() == ".pvtu")
+                {
+                    std::filesystem::remove_all(path.parent_path() / path.stem(), ec);
+                }
             }
         }
     }

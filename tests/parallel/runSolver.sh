@@ -6,7 +6,9 @@
 #                 run's message (its stderr) exactly once in stdout+stderr
 #   dryRunOnce    -dryRun: exit 0, the header and the "Dry run" line once, "Ranks  RANKS"
 #   sameResults   exit 0 both, and VTK/ and postProcessing/*/*.dat identical (cmp) to serial
-#   notAvailable  exit 1 with the one "not available yet" message; nothing written to VTK/
+#   bitIdentical  exit 0 both, and every output VTK/NAME_<n>.pvtu (read with VTK's parallel
+#                 reader) bit-identical to the serial VTK/NAME_<n>.vtu: positions, velocities, F
+#   refused       exit 1 with the one "does not run on several ranks yet" message; no VTK/
 # The case is copied into a temporary folder (never written in place). -parallel goes last, so
 # columns in messages about the command line are those of the serial run.
 set -u
@@ -51,10 +53,19 @@ expectOnce()
     [ "$count" = 1 ] || fail "found $count times in the parallel output (expected once): $1"
 }
 
+# A copy of the case in $1/NAME, with its particles (sphParticles, if the case has none yet).
+copyCase()
+{
+    mkdir -p "$1" && cp -r "$case" "$1/$name"
+    if [ ! -e "$1/$name/constant/particles.vtu" ] && [ -e "$1/$name/system/particlesDict" ]; then
+        (cd "$1/$name" && "$bin/sphParticles" -case . >/dev/null) || fail "sphParticles failed"
+    fi
+}
+
 # The serial run in serial/NAME, its stdout and stderr apart (serialOut, serialErr, serialCode).
 runSerial()
 {
-    mkdir -p "$work/serial" && cp -r "$case" "$work/serial/$name"
+    copyCase "$work/serial"
     (cd "$work/serial/$name" && "$bin/sphSolid" -case . "$@" >"$work/serial.out" 2>"$work/serial.err")
     serialCode=$?
     serialErr=$(cat "$work/serial.err")
@@ -63,7 +74,7 @@ runSerial()
 # The parallel run in parallel/NAME, stdout and stderr together in output (as a user sees it).
 runParallel()
 {
-    mkdir -p "$work/parallel" && cp -r "$case" "$work/parallel/$name"
+    copyCase "$work/parallel"
     output=$(cd "$work/parallel/$name" &&
         "$mpiexec" --oversubscribe -np "$ranks" "$bin/sphSolid" -case . "$@" -parallel 2>&1)
     code=$?
@@ -106,11 +117,30 @@ sameResults)
     done
     echo "compared $(echo "$serialFiles" | wc -l) files"
     ;;
-notAvailable)
+bitIdentical)
+    runSerial "$@"
+    runParallel "$@"
+    expectCode "$serialCode" 0 "the serial run"
+    expectCode "$code" 0 "the parallel run"
+    expectOnce $'\nEnd: '
+    outputs=0
+    for file in "$work/serial/$name"/VTK/"$name"_*.vtu; do
+        [ -e "$file" ] || break
+        pvtu="$work/parallel/$name/VTK/$(basename "$file" .vtu).pvtu"
+        "$bin/compareOutputs" "$file" "$pvtu" || fail "$(basename "$pvtu") differs from the serial output"
+        outputs=$((outputs + 1))
+    done
+    [ "$outputs" -gt 1 ] || fail "the serial run wrote $outputs outputs"
+    serialTimes=$(grep -o 'timestep="[^"]*"' "$work/serial/$name/VTK/$name.pvd")
+    parallelTimes=$(grep -o 'timestep="[^"]*"' "$work/parallel/$name/VTK/$name.pvd")
+    [ "$serialTimes" = "$parallelTimes" ] || fail "the .pvd series list other times"
+    echo "compared $outputs outputs"
+    ;;
+refused)
     runParallel "$@"
     expectCode "$code" 1 "the parallel run"
     expectOnce "--> sphSolid FATAL INPUT ERROR"
-    expectOnce "running on more than one rank (here $ranks) is not available yet in this version of sphSolid"
+    expectOnce "does not run on several ranks yet"
     [ ! -e "$work/parallel/$name/VTK" ] || fail "the run wrote VTK/"
     ;;
 *)

@@ -23,4 +23,18 @@ endforeach()
 sph_add_solver_run("dry run once on 2 ranks" 2 ${sphDykaBar} dryRunOnce)
 sph_add_solver_run("on 1 rank writes the serial output" 1 ${sphDykaBar} sameResults
                    -threads 1 -set endTime=5e-4)
-sph_add_solver_run("run on 2 ranks not available yet" 2 ${sphDykaBar} notAvailable)
+sph_add_solver_run("refuses a 1D case on 2 ranks" 2 ${sphDykaBar} refused)
+
+# Bit-identity with the serial run (issue 14): the twisting column (3D, 3072 particles, a fixed
+# base), updated-Lagrangian gradF (the reference moves, and the ghosts are gathered again, every
+# step) and total-Lagrangian gradF, on 2, 3 and 4 ranks.
+set(sphTwistingColumn ${CMAKE_SOURCE_DIR}/tutorials/hardCases/twistingColumn)
+foreach(ranks 2 3 4)
+    sph_add_solver_run("UL gradF 3D column bit-identical on ${ranks} ranks" ${ranks}
+                       ${sphTwistingColumn} bitIdentical -threads 1 -set endTime=0.01
+                       -set writeInterval=0.005 -set functions={})
+    sph_add_solver_run("TL gradF 3D column bit-identical on ${ranks} ranks" ${ranks}
+                       ${sphTwistingColumn} bitIdentical -threads 1 -set endTime=0.01
+                       -set writeInterval=0.005 -set functions={}
+                       -set formulation.type=totalLagrangian)
+endforeach()

@@ -21,23 +21,6 @@ namespace sph
 namespace
 {
 
-// The distributed time loop is not built yet (issue 14): N ranks would run N copies of the case,
-// each writing the same files, so a real run stops; dry runs and one rank are fine. Every rank
-// throws it alike (a collective error: rank 0 prints it).
-void requireOneRank(const Communicator& world)
-{
-    if (world.size() > 1)
-    {
-        throw InputError("running on more than one rank (here " + std::to_string(world.size()) +
-                             ") is not available yet in this version of sphSolid",
-                         {"The distributed time loop is still being built. Check the case on "
-                          "every rank with -dryRun (mpirun -np " +
-                              std::to_string(world.size()) +
-                              " sphSolid -parallel -dryRun), or run it on one rank (mpirun -np 1 "
-                              "sphSolid -parallel, or sphSolid alone)."});
-    }
-}
-
 template <int D>
 int runDimension(const CaseDictionaries& dicts, const ControlSettings& control,
                  const SchemeSettings& schemes, bool dryRun)
@@ -71,7 +54,6 @@ int runDimension(const CaseDictionaries& dicts, const ControlSettings& control,
         log.line("Dry run: every dictionary is valid and every model was built; not running.");
         return 0;
     }
-    requireOneRank(Communicator::world());
     log.line("");
     simulation.run(log);
     return 0;

@@ -1,0 +1,122 @@
+#include "io/PvtuFile.hpp"
+
+#include "io/AtomicFile.hpp"
+
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
+
+#include <sstream>
+
+namespace sph
+{
+
+namespace pt = boost::property_tree;
+
+namespace
+{
+
+// The type name VTK writes for an array (io/VtuFile.cpp: Int32, Float32 or Float64).
+std::string typeOf(const VtuArray& array)
+{
+    if (array.integer)
+    {
+        return "Int32";
+    }
+    return array.singles.empty() ? "Float64" : "Float32";
+}
+
+void declare(pt::ptree& parent, const std::string& name, const std::string& type, int components)
+{
+    pt::ptree& array = parent.add("PDataArray", "");
+    array.put("<xmlattr>.type", type);
+    if (!name.empty())
+    {
+        array.put("<xmlattr>.Name", name);
+    }
+    array.put("<xmlattr>.NumberOfComponents", components);
+}
+
+} // namespace
+
+void writePvtu(const std::filesystem::path& file, const VtuData& layout,
+               const std::vector<std::string>& pieces)
+{
+    pt::ptree root;
+    pt::ptree& vtkFile = root.add("VTKFile", "");
+    vtkFile.put("<xmlattr>.type", "PUnstructuredGrid");
+    vtkFile.put("<xmlattr>.version", "1.0");
+    vtkFile.put("<xmlattr>.byte_order", "LittleEndian");
+    vtkFile.put("<xmlattr>.header_type", "UInt64");
+    pt::ptree& grid = vtkFile.add("PUnstructuredGrid", "");
+    grid.put("<xmlattr>.GhostLevel", "0");
+    pt::ptree& pointData = grid.add("PPointData", "");
+    if (!layout.activeScalars.empty())
+    {
+        pointData.put("<xmlattr>.Scalars", layout.activeScalars);
+    }
+    if (!layout.activeVectors.empty())
+    {
+        pointData.put("<xmlattr>.Vectors", layout.activeVectors);
+    }
+    if (!layout.activeTensors.empty())
+    {
+        pointData.put("<xmlattr>.Tensors", layout.activeTensors);
+    }
+    for (const auto& [name, array] : layout.pointData)
+    {
+        declare(pointData, name, typeOf(array), array.components);
+    }
+    declare(grid.add("PPoints", ""), "Points", "Float64", 3);
+    pt::ptree& cells = grid.add("PCells", "");
+    declare(cells, "connectivity", "Int64", 1);
+    declare(cells, "offsets", "Int64", 1);
+    declare(cells, "types", "UInt8", 1);
+    for (const std::string& piece : pieces)
+    {
+        grid.add("Piece", "").put("<xmlattr>.Source", piece);
+    }
+    std::ostringstream text;
+    pt::write_xml(text, root, pt::xml_writer_make_settings<std::string>(' ', 2));
+    writeTextAtomically(file, text.str());
+}
+
+VtuData keepPoints(const VtuData& data, const std::vector<std::uint8_t>& keep)
+{
+    VtuData kept;
+    kept.fieldData = data.fieldData;
+    kept.stringFields = data.stringFields;
+    kept.activeScalars = data.activeScalars;
+    kept.activeVectors = data.activeVectors;
+    kept.activeTensors = data.activeTensors;
+    const std::size_t n = data.pointCount();
+    const auto copyRows = [&](const auto& from, auto& to, std::size_t width) {
+        for (std::size_t p = 0; p < n; ++p)
+        {
+            if (keep[p])
+            {
+                to.insert(to.end(), from.begin() + static_cast<long>(p * width),
+                          from.begin() + static_cast<long>((p + 1) * width));
+            }
+        }
+    };
+    copyRows(data.points, kept.points, 3);
+    for (const auto& [name, array] : data.pointData)
+    {
+        VtuArray& out = kept.pointData[name];
+        out.components = array.components;
+        out.integer = array.integer;
+        out.componentNames = array.componentNames;
+        const auto width = static_cast<std::size_t>(array.components);
+        if (array.singles.empty())
+        {
+            copyRows(array.values, out.values, width);
+        }
+        else
+        {
+            copyRows(array.singles, out.singles, width);
+        }
+    }
+    return kept;
+}
+
+} // namespace sph

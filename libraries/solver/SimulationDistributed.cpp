@@ -1,0 +1,252 @@
+// A run on several ranks (mpirun -np N sphSolid -parallel; docs/parallel.md).
+//
+// Every rank builds the case whole, as a serial run does (models, bodies, initial conditions,
+// the checks of the initial configuration), then keeps its share: RCB gives each rank a compact
+// region, and around its owned particles each rank holds ghosts, copies of the particles of
+// other ranks within ghostWidth(). The local particles, owned and ghosts, are kept in increasing
+// global index (parallel/ParticleExchange.hpp), so every neighbour sum adds the serial run's
+// terms in the serial order: positions, velocities and F are bit-identical to the serial run.
+//
+// Ghosts are computed like owned particles (their forces, F, the drift), which is exact for
+// those whose neighbourhood is complete; the outer ones are not, so the owners' values replace
+// them: F and P after each force evaluation (the time step reads them), every stored field at
+// the end of each step. What decides the run is agreed by every rank: the time step is a
+// maximum over the ranks, and a failure is the one at the least global index of any rank,
+// diagnosed by its owner and stopping every rank alike.
+#include "solver/Simulation.hpp"
+
+#include "core/Application.hpp"
+#include "core/InputError.hpp"
+#include "core/IoError.hpp"
+#include "io/PvtuFile.hpp"
+#include "io/VtuFile.hpp"
+#include "parallel/RcbPartition.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace sph
+{
+
+template <int D>
+void Simulation<D>::checkDistributable() const
+{
+    const auto refuse = [](const std::string& what) {
+        throw InputError(what + " does not run on several ranks yet",
+                         {"A distributed run (sphSolid -parallel on more than one rank) supports "
+                          "2D and 3D cases with any kernel, formulation and stabilisation, elastic "
+                          "materials, gravity and fixed particles; run this case serially (or on "
+                          "one rank) until the rest lands (docs/parallel.md)."});
+    };
+    if (D == 1)
+    {
+        refuse("a 1D case");
+    }
+    if (contact_->active())
+    {
+        refuse("contact between bodies (contact in system/sphSchemes)");
+    }
+    if (!walls_->empty())
+    {
+        refuse("a case with rigid walls (constant/walls)");
+    }
+    if (viscosity_->active())
+    {
+        refuse("artificial viscosity (artificialViscosity in system/sphSchemes)");
+    }
+    if (!functionObjects_.empty())
+    {
+        refuse("a case with function objects (functions in system/controlDict)");
+    }
+    if (historyMaterials_)
+    {
+        refuse("a material with a plastic history");
+    }
+    if (control_.startFromLatest)
+    {
+        refuse("a restart (startFrom latestTime in system/controlDict)");
+    }
+}
+
+// Ghosts are needed as far as an owned particle's force reaches: the force on c gathers what its
+// neighbours a computed (their F, P, corrected gradients, gradF's samples), and each of those
+// reads a's own neighbours' positions: two search radii in the reference configuration. (The
+// bit-identity tests fail with one.)
+template <int D>
+double Simulation<D>::ghostWidth() const
+{
+    return 2.0 * scheme_->referenceNeeds(*kernel_).searchRadius;
+}
+
+template <int D>
+long Simulation<D>::globalIndex(std::size_t a) const
+{
+    return distributed() ? globalId_[a] : static_cast<long>(a);
+}
+
+template <int D>
+void Simulation<D>::distribute()
+{
+    checkDistributable();
+    globalCount_ = particles_.size();
+    exchange_ = std::make_unique<ParticleExchange<D>>(comm_);
+    audit_.countOwned(&owned_, [this](double local) { return comm_.sum(local); });
+    // Every rank holds the whole set: each keeps an equal share, then RCB makes the shares
+    // compact regions (the same partition on every run with the same ranks).
+    const auto ranks = static_cast<std::size_t>(comm_.size());
+    const auto rank = static_cast<std::size_t>(comm_.rank());
+    std::vector<std::uint8_t> share(globalCount_, 0);
+    std::fill(share.begin() + static_cast<long>(globalCount_ * rank / ranks),
+              share.begin() + static_cast<long>(globalCount_ * (rank + 1) / ranks), 1);
+    exchange_->keepOnly(fields_, share);
+    const std::vector<std::uint64_t> ids(globalId_.begin(), globalId_.end());
+    exchange_->migrate(fields_, globalId_, rcbOwners<D>(comm_, particles_.x, ids));
+    regather();
+}
+
+// The ghosts are chosen in the reference configuration, where the neighbour lists are built:
+// X for a total-Lagrangian run, x^r for an updated-Lagrangian one (called after each move).
+template <int D>
+void Simulation<D>::regather()
+{
+    const std::vector<Vec<D>>& positions =
+        formulation_->updatesReference() ? reference_->reference().x : particles_.X;
+    exchange_->addGhosts(fields_, positions, globalId_, ghostWidth());
+    localParticlesChanged();
+}
+
+template <int D>
+void Simulation<D>::localParticlesChanged()
+{
+    owned_ = exchange_->ownedMask(particles_.size());
+    // Global indices number the bodies one after another, so each body is a contiguous range
+    // of the local particles too.
+    for (std::size_t b = 0; b < particles_.bodies.size(); ++b)
+    {
+        const auto [first, last] =
+            std::equal_range(particles_.body.begin(), particles_.body.end(), static_cast<int>(b));
+        particles_.bodies[b].begin = static_cast<std::size_t>(first - particles_.body.begin());
+        particles_.bodies[b].end = static_cast<std::size_t>(last - particles_.body.begin());
+    }
+    reference_->reference().candidates.clear(); // the last search's indices are stale
+    const ForceStatus status = formulation_->updatesReference()
+                                   ? reference_->restored(particles_)
+                                   : reference_->initialise(particles_);
+    if (!status.ok())
+    {
+        // The whole set passed this check at setup: a singular neighbourhood now can only be a
+        // ghost's, cut at the edge of the ghost layer (its owner's is whole).
+        if (owned_[static_cast<std::size_t>(status.badParticle)])
+        {
+            checkStatus(status, "rebuilding the reference configuration of a rank's particles");
+        }
+        throw std::logic_error("ghost particle " + std::to_string(globalIndex(
+                                   static_cast<std::size_t>(status.badParticle))) +
+                               " has a singular neighbourhood: the ghost layer is too thin");
+    }
+}
+
+template <int D>
+void Simulation<D>::refreshGhosts(const std::vector<std::string>& names)
+{
+    if (distributed())
+    {
+        exchange_->updateGhosts(fields_, names);
+    }
+}
+
+template <int D>
+void Simulation<D>::refreshAllGhosts()
+{
+    if (!distributed())
+    {
+        return;
+    }
+    std::vector<std::string> names;
+    for (const auto& field : fields_.all())
+    {
+        if (field.array->stored())
+        {
+            names.push_back(field.spec.name());
+        }
+    }
+    exchange_->updateGhosts(fields_, names);
+}
+
+// Serially: fails when the status does. Distributed: every rank learns whether any failed,
+// and the owner of the failing particle with the least global index words the diagnosis.
+template <int D>
+void Simulation<D>::checkStatus(const ForceStatus& status, const std::string& when)
+{
+    if (!distributed())
+    {
+        if (!status.ok())
+        {
+            failWith(describeFailure(status, when));
+        }
+        return;
+    }
+    constexpr double none = std::numeric_limits<double>::infinity();
+    const double mine =
+        status.ok() ? none : static_cast<double>(globalIndex(static_cast<std::size_t>(status.badParticle)));
+    const double first = comm_.minimum(mine);
+    if (first == none)
+    {
+        return;
+    }
+    const auto root = static_cast<int>(comm_.minimum(mine == first ? comm_.rank() : none));
+    const std::string diagnosis =
+        comm_.broadcast(comm_.rank() == root ? describeFailure(status, when) : "", root);
+    failWith(diagnosis);
+}
+
+// Each rank writes its owned particles as VTK/<case>_<n>/<case>_<n>_<rank>.vtu; rank 0 writes
+// VTK/<case>_<n>.pvtu, which names them, and adds it to the series. A failed write on any rank
+// stops every rank with that rank's I/O error (nothing damaged replaces a good file).
+template <int D>
+void Simulation<D>::writePieces(const VtuData& data, double time)
+{
+    const std::string stem = caseName_ + "_" + std::to_string(outputIndex_);
+    const std::filesystem::path folder = dicts_.caseDir() / "VTK";
+    std::vector<std::string> pieces;
+    for (int r = 0; r < comm_.size(); ++r)
+    {
+        pieces.push_back(stem + "/" + stem + "_" + std::to_string(r) + ".vtu");
+    }
+    const VtuData piece = keepPoints(data, owned_);
+    std::string error;
+    try
+    {
+        if (comm_.rank() == 0)
+        {
+            std::filesystem::create_directories(folder / stem);
+        }
+        comm_.barrier();
+        writeVtu(folder / pieces[static_cast<std::size_t>(comm_.rank())], piece);
+    }
+    catch (const IoError& failure)
+    {
+        error = failure.what();
+    }
+    catch (const std::filesystem::filesystem_error& failure)
+    {
+        error = failure.what();
+    }
+    const auto failed = static_cast<int>(comm_.minimum(error.empty() ? comm_.size() : comm_.rank()));
+    if (failed < comm_.size())
+    {
+        throw IoError(comm_.broadcast(error, failed));
+    }
+    if (comm_.rank() == 0)
+    {
+        writePvtu(folder / (stem + ".pvtu"), piece, pieces);
+        pvd_.add(time, stem + ".pvtu");
+    }
+    lastOutputFile_ = stem + ".pvtu";
+}
+
+template class Simulation<1>;
+template class Simulation<2>;
+template class Simulation<3>;
+
+} // namespace sph
