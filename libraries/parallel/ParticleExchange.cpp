@@ -87,6 +87,7 @@ void ParticleExchange<D>::countSent(const std::vector<Rows>& toEach)
             bytesSent_ += toEach[r].size() * sizeof(double);
         }
     }
+    totalBytesSent_ += bytesSent_;
 }
 
 template <int D>

@@ -74,8 +74,10 @@ public:
     bool owned(std::size_t a) const { return owned_.empty() || owned_[a] != 0; }
     std::size_t ownedCount() const { return ownedCount_; }
     std::size_t ghostCount() const { return ghostCount_; }
-    // The values this rank sent in the last migrate, addGhosts or updateGhosts, in bytes.
+    // The values this rank sent in the last migrate, addGhosts or updateGhosts, in bytes, and in
+    // all of them since this object was made.
     std::size_t bytesSent() const { return bytesSent_; }
+    std::size_t totalBytesSent() const { return totalBytesSent_; }
 
 private:
     using Rows = std::vector<double>; // per particle: its global id, then every stored field
@@ -95,6 +97,7 @@ private:
     std::size_t ownedCount_ = 0;
     std::size_t ghostCount_ = 0;
     std::size_t bytesSent_ = 0;
+    std::size_t totalBytesSent_ = 0;
 };
 
 } // namespace sph

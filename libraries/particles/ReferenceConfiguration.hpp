@@ -38,6 +38,12 @@ struct ReferenceConfiguration
     // Candidate pairs for moving references (see rebuild).
     VerletNeighbours<D> candidates;
 
+    // A distributed run's owned particles (1) and ghosts (0): only owned particles count in the
+    // checks of a reference move (a ghost cut at the edge of the ghost layer is its owner's to
+    // check). Null: every particle counts.
+    const std::vector<std::uint8_t>* owned = nullptr;
+    bool counts(std::size_t a) const { return !owned || (*owned)[a] != 0; }
+
     std::size_t size() const { return x.size(); }
 
     // x^r = X, V^r = V0, F^r = I (and K = 0 when withGradient).

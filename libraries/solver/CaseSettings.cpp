@@ -37,6 +37,12 @@ Schema ControlSettings::schema()
                  .min(0)
                  .defaultValue("1"))
         .add(Key::integer("maxSteps", "stop after this many time steps").min(1).optional())
+        .add(Key::real("maxLoadImbalance",
+                       "distributed runs (sphSolid -parallel): the particles are partitioned "
+                       "again when a rank holds more than this times the mean (owned and ghost "
+                       "particles), checked at each move of an updated-Lagrangian reference")
+                 .range(1.0, 1e3, false, true)
+                 .defaultValue("1.2"))
         .add(Key::stringList("libs", "extra model libraries to load at start").defaultValue("()"))
         .add(Key::dict("functions", "function objects: name { type ...; }")
                  .selects("functionObject")
@@ -74,6 +80,7 @@ ControlSettings ControlSettings::read(const CaseDictionaries& dicts)
     settings.purgeWrite = p.integer("purgeWrite");
     settings.startFromLatest = p.word("startFrom") == "latestTime";
     settings.timeStepUpdateInterval = p.integer("timeStepUpdateInterval");
+    settings.maxLoadImbalance = p.real("maxLoadImbalance");
     if (p.has("maxSteps"))
     {
         settings.maxSteps = p.integer("maxSteps");

@@ -55,6 +55,7 @@ struct ControlSettings
     bool startFromLatest = false;
     long timeStepUpdateInterval = 1;
     std::optional<long> maxSteps;
+    double maxLoadImbalance = 1.2; // distributed runs: repartition above this (max / mean)
     const Dictionary* functions = nullptr;
     // The case's own model libraries (`libs`), with where each is named.
     std::vector<std::pair<std::string, SourceLocation>> libraries;

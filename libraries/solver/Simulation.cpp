@@ -60,6 +60,11 @@ RunSummary Simulation<D>::run(RunLog& log)
             log.line(line);
         }
     }
+    if (distributed())
+    {
+        const std::string report = distributionReport(step_ - firstStep);
+        log.line(report);
+    }
     const RunSummary summary = log.finish(step_ - firstStep, time_);
     writeSummary(summary, "");
     comm_.barrier(); // no rank leaves before the output is complete

@@ -140,6 +140,7 @@ private:
     void checkStatus(const ForceStatus& status, const std::string& when);
     double ghostWidth() const;         // how far from its owned particles a rank needs ghosts
     long globalIndex(std::size_t a) const; // the particle's index in the whole set
+    std::string distributionReport(long steps) const; // repartitions, ghosts, bytes per step
     void writePieces(const VtuData& data, double time); // this rank's piece (+ .pvtu on rank 0)
 
     // SimulationOutput.cpp
@@ -204,6 +205,7 @@ private:
     std::vector<int> globalId_;
     std::vector<std::uint8_t> owned_;
     std::size_t globalCount_ = 0; // particles in the whole set
+    long repartitions_ = 0;       // migrations after the start (maxLoadImbalance)
     std::string lastOutputFile_;  // in VTK/, the last output written (.vtu or .pvtu)
 };
 

@@ -23,7 +23,9 @@
 #include "parallel/RcbPartition.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace sph
 {
@@ -106,19 +108,51 @@ void Simulation<D>::distribute()
 
 // The ghosts are chosen in the reference configuration, where the neighbour lists are built:
 // X for a total-Lagrangian run, x^r for an updated-Lagrangian one (called after each move).
+//
+// Before, the particles are partitioned again (RCB at these positions) when the ranks' loads
+// have drifted apart by more than maxLoadImbalance (controlDict): a rank computes its owned
+// particles and its ghosts, and a body that moves stretches its ranks' regions, and with them
+// their ghost layers. Every rank takes the same decision (a maximum and a sum in rank order).
 template <int D>
 void Simulation<D>::regather()
 {
     const std::vector<Vec<D>>& positions =
         formulation_->updatesReference() ? reference_->reference().x : particles_.X;
+    const auto load = static_cast<double>(particles_.size());
+    const bool started = comm_.maximum(static_cast<double>(exchange_->ghostCount())) > 0.0;
+    const double mean = comm_.sum(load) / comm_.size();
+    if (started && comm_.maximum(load) > control_.maxLoadImbalance * mean)
+    {
+        exchange_->removeGhosts(fields_);
+        const std::vector<std::uint64_t> ids(globalId_.begin(), globalId_.end());
+        exchange_->migrate(fields_, globalId_, rcbOwners<D>(comm_, positions, ids));
+        ++repartitions_;
+    }
     exchange_->addGhosts(fields_, positions, globalId_, ghostWidth());
     localParticlesChanged();
+}
+
+// The log's account of the distribution: repartitions, ghosts and traffic per rank.
+template <int D>
+std::string Simulation<D>::distributionReport(long steps) const
+{
+    const double ranks = comm_.size();
+    const double ghosts = comm_.sum(static_cast<double>(exchange_->ghostCount())) / ranks;
+    const double bytes = comm_.sum(static_cast<double>(exchange_->totalBytesSent())) / ranks;
+    std::ostringstream out;
+    out << "Ranks       " << comm_.size() << ": " << repartitions_
+        << " repartitions; per rank, " << std::lround(ghosts) << " ghosts ("
+        << std::lround(100.0 * ghosts / (static_cast<double>(globalCount_) / ranks))
+        << " % of its owned particles) and " << std::lround(bytes / std::max(1L, steps) / 1024.0)
+        << " kB sent per step (means at the end)";
+    return out.str();
 }
 
 template <int D>
 void Simulation<D>::localParticlesChanged()
 {
     owned_ = exchange_->ownedMask(particles_.size());
+    reference_->reference().owned = &owned_;
     // Global indices number the bodies one after another, so each body is a contiguous range
     // of the local particles too.
     for (std::size_t b = 0; b < particles_.bodies.size(); ++b)

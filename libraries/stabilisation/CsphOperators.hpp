@@ -210,7 +210,7 @@ public:
         }
         for (std::size_t a = 0; a < n && bad < 0; ++a)
         {
-            if (!admissible<D>(F[a], badJ))
+            if (ref.counts(a) && !admissible<D>(F[a], badJ))
             {
                 bad = static_cast<long>(a);
             }

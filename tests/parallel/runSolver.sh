@@ -8,6 +8,9 @@
 #   sameResults   exit 0 both, and VTK/ and postProcessing/*/*.dat identical (cmp) to serial
 #   bitIdentical  exit 0 both, and every output VTK/NAME_<n>.pvtu (read with VTK's parallel
 #                 reader) bit-identical to the serial VTK/NAME_<n>.vtu: positions, velocities, F
+#   migrating     bitIdentical, and the particles were partitioned again during the run
+#   sameFailure   exit 2 both (a numerical failure), the serial diagnosis line once, and the
+#                 last good level written bit-identical to the serial one
 #   refused       exit 1 with the one "does not run on several ranks yet" message; no VTK/
 # The case is copied into a temporary folder (never written in place). -parallel goes last, so
 # columns in messages about the command line are those of the serial run.
@@ -117,7 +120,7 @@ sameResults)
     done
     echo "compared $(echo "$serialFiles" | wc -l) files"
     ;;
-bitIdentical)
+bitIdentical | migrating)
     runSerial "$@"
     runParallel "$@"
     expectCode "$serialCode" 0 "the serial run"
@@ -135,6 +138,24 @@ bitIdentical)
     parallelTimes=$(grep -o 'timestep="[^"]*"' "$work/parallel/$name/VTK/$name.pvd")
     [ "$serialTimes" = "$parallelTimes" ] || fail "the .pvd series list other times"
     echo "compared $outputs outputs"
+    if [ "$check" = migrating ]; then
+        echo "$output" | grep -qE "^Ranks +$ranks: [1-9][0-9]* repartitions" ||
+            fail "no repartition during the run"
+    fi
+    ;;
+sameFailure)
+    runSerial "$@"
+    runParallel "$@"
+    expectCode "$serialCode" 2 "the serial run"
+    expectCode "$code" 2 "the parallel run"
+    expectOnce "--> sphSolid NUMERICAL FAILURE"
+    diagnosis=$(echo "$serialErr" | grep -A1 "NUMERICAL FAILURE" | tail -1)
+    [ -n "$diagnosis" ] || fail "the serial run gave no diagnosis"
+    expectOnce "$diagnosis"
+    last=$(grep -o 'file="[^"]*"' "$work/serial/$name/VTK/$name.pvd" | tail -1 | cut -d'"' -f2)
+    "$bin/compareOutputs" "$work/serial/$name/VTK/$last" \
+        "$work/parallel/$name/VTK/$(basename "$last" .vtu).pvtu" ||
+        fail "the last good level differs from the serial one"
     ;;
 refused)
     runParallel "$@"

@@ -38,3 +38,20 @@ foreach(ranks 2 3 4)
                        -set writeInterval=0.005 -set functions={}
                        -set formulation.type=totalLagrangian)
 endforeach()
+
+# A numerical failure (det F <= 0 at one particle, owned by one rank: courant 1.5) stops every
+# rank with the serial run's diagnosis, once, and the last good level as the serial run wrote it.
+foreach(ranks 2 3)
+    sph_add_solver_run("failure diagnosed once on ${ranks} ranks" ${ranks} ${sphTwistingColumn}
+                       sameFailure -threads 1 -set endTime=0.02 -set courant=1.5
+                       -set writeInterval=0.002 -set functions={})
+endforeach()
+
+# Particles that change owner during the run: the large-rotation plate (2D, UL gradF) spun at
+# 40 rad/s, so its particles sweep across the ranks' regions, partitioned again whenever a rank
+# holds 5 % more than the mean (maxLoadImbalance 1.05): still bit-identical.
+sph_add_solver_run("migrating particles bit-identical on 3 ranks" 3
+                   ${CMAKE_SOURCE_DIR}/tutorials/hardCases/largeRotation migrating -threads 1
+                   -set endTime=0.01 -set writeInterval=0.0025 -set functions={}
+                   -set bodies.plate.initialVelocity.spin.omega=40
+                   -set controlDict.maxLoadImbalance=1.05)

@@ -219,7 +219,7 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
     for (std::size_t a = 0; a < n; ++a)
     {
         double J;
-        if (!admissible<D>(F[a], J))
+        if (ref.counts(a) && !admissible<D>(F[a], J))
         {
             status = ForceStatus::failed(FailureKind::nonPositiveJacobian, static_cast<long>(a), J,
                                          "det F");

@@ -260,6 +260,20 @@ void checkOwnedParticles(const std::string& name, bool updated)
     CHECK(onlyOne.badParticle == static_cast<long>(n / 3));
     const std::vector<std::uint8_t> none(n, 0);
     CHECK(energyOf(mirrored, &none).ok());
+
+    // The same for a move of the reference configuration to the mirrored positions.
+    const auto moveReference = [&](const std::vector<std::uint8_t>* owned) {
+        std::vector<Mat<D>> Fr;
+        std::vector<Tensor3<D>> K;
+        fixture.ref.owned = owned;
+        const ForceStatus status = fixture.scheme->referenceUpdate(
+            mirrored, fixture.ref, Fr, fixture.ref.K.empty() ? nullptr : &K);
+        fixture.ref.owned = nullptr;
+        return status;
+    };
+    CHECK(moveReference(nullptr).badParticle == 0);
+    CHECK(moveReference(&one).badParticle == static_cast<long>(n / 3));
+    CHECK(moveReference(&none).ok());
 }
 
 template <int D>
