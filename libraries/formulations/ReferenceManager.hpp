@@ -9,6 +9,8 @@
 #include "particles/Parallel.hpp"
 #include "stabilisation/Stabilisation.hpp"
 
+#include <functional>
+
 namespace sph
 {
 
@@ -63,14 +65,36 @@ public:
                         ref_.K);
         }
         scalars.bind("referenceUpdateStep", ref_.updateStep);
+        for (const char* name : {"referencePosition", "referenceVolume",
+                                 "referenceDeformationGradient", "referenceGradientOfF"})
+        {
+            if (fields.find(name))
+            {
+                fieldNames_.emplace_back(name);
+            }
+        }
     }
+
+    // The fields declareFields() declared: what a moved reference changed.
+    const std::vector<std::string>& fieldNames() const { return fieldNames_; }
 
     // After a restart has read the declared fields back: rebuilds what depends on them.
     ForceStatus restored(const ParticleSet<D>& particles) { return rebuild(particles.body); }
 
+    // What a distributed run does in the middle of a move (both collective, so every rank
+    // calls them at the same point, whatever its own particles did).
+    struct MoveHooks
+    {
+        // Sees the status of the new F^r before anything is set (it may stop the run).
+        std::function<void(const ForceStatus&)> checked;
+        // Once x^r, V^r, F^r (and K) are set, before what depends on them is rebuilt.
+        std::function<void()> settled;
+    };
+
     // Moves the reference configuration to the current positions when due. Returns whether it
     // moved; a failure (det F <= 0 at the move) is reported in `status`.
-    bool updateIfDue(long step, const ParticleSet<D>& particles, ForceStatus& status)
+    bool updateIfDue(long step, const ParticleSet<D>& particles, ForceStatus& status,
+                     const MoveHooks& hooks = {})
     {
         if (!formulation_.updateDue(step, ref_.updateStep))
         {
@@ -80,6 +104,10 @@ public:
         std::vector<Mat<D>>& F = nextF_;
         std::vector<Tensor3<D>>& K = nextK_;
         status = scheme_.referenceUpdate(particles.x, ref_, F, carriesK() ? &K : nullptr);
+        if (hooks.checked)
+        {
+            hooks.checked(status);
+        }
         if (!status.ok())
         {
             return false;
@@ -97,6 +125,10 @@ public:
             ref_.K.swap(K);
         }
         ref_.updateStep = step;
+        if (hooks.settled)
+        {
+            hooks.settled();
+        }
         status = rebuild(particles.body);
         return true;
     }
@@ -131,6 +163,7 @@ private:
     ReferenceConfiguration<D> ref_;
     std::vector<Mat<D>> nextF_;
     std::vector<Tensor3<D>> nextK_;
+    std::vector<std::string> fieldNames_;
 };
 
 } // namespace sph

@@ -113,7 +113,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         drift(dt);
         applyContact(dt);
         checkOrder(dt);
-        refreshAllGhosts();
+        refreshGhostPositions();
         time_ = step.landsOnTarget ? step.target : time_ + dt;
         ++step_;
     }
@@ -212,11 +212,20 @@ template <int D>
 bool Simulation<D>::moveReference(long firstStep)
 {
     ForceStatus status;
-    const bool moved = reference_->updateIfDue(step_, particles_, status);
+    // Distributed: every rank learns of a failure at the move before going on, and the ghosts'
+    // new reference is their owners' (an outer ghost's own is cut at the layer's edge) before
+    // the corrected gradients are built from it.
+    const typename ReferenceManager<D>::MoveHooks hooks{
+        [this](const ForceStatus& moveStatus) {
+            checkStatus(moveStatus, "moving the reference configuration");
+        },
+        [this] { refreshGhosts(reference_->fieldNames()); }};
+    const bool moved = distributed() ? reference_->updateIfDue(step_, particles_, status, hooks)
+                                     : reference_->updateIfDue(step_, particles_, status);
     checkStatus(status, "moving the reference configuration");
-    if (moved && distributed())
+    if (moved && distributed() && regatherDue())
     {
-        regather(); // the neighbours are searched in the new x^r
+        regather();
     }
     const ReferenceConfiguration<D>& ref = reference_->reference();
     return moved || (step_ == firstStep && ref.updateStep == step_ && ref.x == particles_.x);

@@ -130,15 +130,17 @@ private:
     bool distributed() const { return exchange_ != nullptr; }
     void checkDistributable() const;   // the models a distributed run supports, else InputError
     void distribute();                 // every rank's whole set -> owned particles + ghosts
+    bool regatherDue() const;          // a particle moved more than half the ghosts' skin
     void regather();                   // new ghosts around the owned particles (after a move of
                                        //   the reference configuration)
     void localParticlesChanged();      // body ranges, owned mask, reference data of the new set
     void refreshGhosts(const std::vector<std::string>& names); // owners' values -> ghosts
-    void refreshAllGhosts();           // every stored field
+    void refreshGhostPositions();      // x^{n+1} of the owners (each step)
     // Fails when the status does (distributed: when any rank's does, with the diagnosis of the
     // failing particle of least global index, on every rank).
     void checkStatus(const ForceStatus& status, const std::string& when);
     double ghostWidth() const;         // how far from its owned particles a rank needs ghosts
+    double ghostSkin() const;          // the part of it that lets particles move between gathers
     long globalIndex(std::size_t a) const; // the particle's index in the whole set
     std::string distributionReport(long steps) const; // repartitions, ghosts, bytes per step
     void writePieces(const VtuData& data, double time); // this rank's piece (+ .pvtu on rank 0)
@@ -206,6 +208,8 @@ private:
     std::vector<std::uint8_t> owned_;
     std::size_t globalCount_ = 0; // particles in the whole set
     long repartitions_ = 0;       // migrations after the start (maxLoadImbalance)
+    long gathers_ = 0;            // ghost layers gathered (the start, then as particles move)
+    std::vector<Vec<D>> gatheredAt_; // the local particles' x^r when the ghosts were gathered
     std::string lastOutputFile_;  // in VTK/, the last output written (.vtu or .pvtu)
 };
 

@@ -72,12 +72,39 @@ void Simulation<D>::checkDistributable() const
 
 // Ghosts are needed as far as an owned particle's force reaches: the force on c gathers what its
 // neighbours a computed (their F, P, corrected gradients, gradF's samples), and each of those
-// reads a's own neighbours' positions: two search radii in the reference configuration. (The
-// bit-identity tests fail with one.)
+// reads a's own neighbours' positions: two search radii in the reference configuration (the
+// bit-identity tests fail with one). Plus a skin, so that an updated-Lagrangian reference can
+// move several times before the ghosts must be gathered again (regatherDue).
 template <int D>
 double Simulation<D>::ghostWidth() const
 {
-    return 2.0 * scheme_->referenceNeeds(*kernel_).searchRadius;
+    return 2.0 * scheme_->referenceNeeds(*kernel_).searchRadius + ghostSkin();
+}
+
+template <int D>
+double Simulation<D>::ghostSkin() const
+{
+    return 0.5 * scheme_->referenceNeeds(*kernel_).searchRadius;
+}
+
+// While no particle's x^r has moved more than half the skin since the ghosts were gathered,
+// every particle within two radii of an owned one is still among them: the owned particles and
+// the one that would be missing have each moved less than half the skin. The maximum is over
+// the owned particles of every rank, so it covers every particle.
+template <int D>
+bool Simulation<D>::regatherDue() const
+{
+    const std::vector<Vec<D>>& x = reference_->reference().x;
+    double moved2 = 0.0;
+    for (std::size_t a = 0; a < x.size(); ++a)
+    {
+        if (owned_[a])
+        {
+            moved2 = std::max(moved2, (x[a] - gatheredAt_[a]).squaredNorm());
+        }
+    }
+    const double half = 0.5 * ghostSkin();
+    return comm_.maximum(moved2) > half * half;
 }
 
 template <int D>
@@ -130,6 +157,8 @@ void Simulation<D>::regather()
     }
     exchange_->addGhosts(fields_, positions, globalId_, ghostWidth());
     localParticlesChanged();
+    gatheredAt_ = positions;
+    ++gathers_;
 }
 
 // The log's account of the distribution: repartitions, ghosts and traffic per rank.
@@ -140,7 +169,7 @@ std::string Simulation<D>::distributionReport(long steps) const
     const double ghosts = comm_.sum(static_cast<double>(exchange_->ghostCount())) / ranks;
     const double bytes = comm_.sum(static_cast<double>(exchange_->totalBytesSent())) / ranks;
     std::ostringstream out;
-    out << "Ranks       " << comm_.size() << ": " << repartitions_
+    out << "Ranks       " << comm_.size() << ": " << gathers_ << " ghost gathers, " << repartitions_
         << " repartitions; per rank, " << std::lround(ghosts) << " ghosts ("
         << std::lround(100.0 * ghosts / (static_cast<double>(globalCount_) / ranks))
         << " % of its owned particles) and " << std::lround(bytes / std::max(1L, steps) / 1024.0)
@@ -189,22 +218,14 @@ void Simulation<D>::refreshGhosts(const std::vector<std::string>& names)
     }
 }
 
+// What an owned particle reads of a ghost is its position, its reference (x^r, V^r, F^r, K:
+// refreshed at each move) and what never changes (V0, body). The rest of a ghost is recomputed
+// before anything reads it (F and P, refreshed after the forces), or read by nothing (its
+// velocity, until the next gather sends every field).
 template <int D>
-void Simulation<D>::refreshAllGhosts()
+void Simulation<D>::refreshGhostPositions()
 {
-    if (!distributed())
-    {
-        return;
-    }
-    std::vector<std::string> names;
-    for (const auto& field : fields_.all())
-    {
-        if (field.array->stored())
-        {
-            names.push_back(field.spec.name());
-        }
-    }
-    exchange_->updateGhosts(fields_, names);
+    refreshGhosts({positionField});
 }
 
 // Serially: fails when the status does. Distributed: every rank learns whether any failed,
