@@ -1,10 +1,12 @@
 #include "io/PvtuFile.hpp"
 
+#include "core/InputError.hpp"
 #include "io/AtomicFile.hpp"
 
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 
+#include <numeric>
 #include <sstream>
 
 namespace sph
@@ -78,6 +80,94 @@ void writePvtu(const std::filesystem::path& file, const VtuData& layout,
     std::ostringstream text;
     pt::write_xml(text, root, pt::xml_writer_make_settings<std::string>(' ', 2));
     writeTextAtomically(file, text.str());
+}
+
+VtuData readPvtu(const std::filesystem::path& file, const std::string& orderBy)
+{
+    const std::string name = file.string();
+    const auto refuse = [&](const std::string& why) {
+        throw InputError("cannot read '" + name + "': " + why,
+                         {"A distributed run's output is the .pvtu and its pieces in the folder of "
+                          "the same name; both are needed."});
+    };
+    pt::ptree root;
+    try
+    {
+        pt::read_xml(name, root);
+    }
+    catch (const pt::xml_parser_error& error)
+    {
+        refuse(error.message());
+    }
+    std::vector<std::filesystem::path> pieces;
+    for (const auto& [tag, piece] : root.get_child("VTKFile.PUnstructuredGrid", pt::ptree()))
+    {
+        if (tag == "Piece")
+        {
+            pieces.push_back(file.parent_path() / piece.get<std::string>("<xmlattr>.Source", ""));
+        }
+    }
+    if (pieces.empty())
+    {
+        refuse("it names no pieces");
+    }
+    VtuData joined;
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+    {
+        VtuData piece = readVtu(pieces[i]);
+        if (i == 0)
+        {
+            joined = std::move(piece);
+            continue;
+        }
+        joined.points.insert(joined.points.end(), piece.points.begin(), piece.points.end());
+        for (auto& [arrayName, array] : joined.pointData)
+        {
+            const auto found = piece.pointData.find(arrayName);
+            if (found == piece.pointData.end() || found->second.components != array.components)
+            {
+                refuse("its piece '" + pieces[i].string() + "' has no array '" + arrayName +
+                       "' like the first piece's");
+            }
+            array.values.insert(array.values.end(), found->second.values.begin(),
+                                found->second.values.end());
+        }
+    }
+    // Into the order of the whole set.
+    const std::size_t n = joined.pointCount();
+    const auto ids = joined.pointData.find(orderBy);
+    if (ids == joined.pointData.end() || ids->second.components != 1)
+    {
+        refuse("its pieces have no array '" + orderBy + "'");
+    }
+    std::vector<std::size_t> at(n, n); // the row that holds point g
+    for (std::size_t row = 0; row < n; ++row)
+    {
+        const double g = ids->second.values[row];
+        if (!(g >= 0.0 && g < static_cast<double>(n)) || g != static_cast<double>(static_cast<std::size_t>(g)) ||
+            at[static_cast<std::size_t>(g)] != n)
+        {
+            refuse("its '" + orderBy + "' values do not number the points 0 .. " +
+                   std::to_string(n - 1) + " once each");
+        }
+        at[static_cast<std::size_t>(g)] = row;
+    }
+    VtuData ordered = joined;
+    const auto reorder = [&](const std::vector<double>& from, std::vector<double>& to, std::size_t width) {
+        for (std::size_t g = 0; g < n; ++g)
+        {
+            std::copy(from.begin() + static_cast<long>(at[g] * width),
+                      from.begin() + static_cast<long>((at[g] + 1) * width),
+                      to.begin() + static_cast<long>(g * width));
+        }
+    };
+    reorder(joined.points, ordered.points, 3);
+    for (auto& [arrayName, array] : ordered.pointData)
+    {
+        reorder(joined.pointData.at(arrayName).values, array.values,
+                static_cast<std::size_t>(array.components));
+    }
+    return ordered;
 }
 
 VtuData keepPoints(const VtuData& data, const std::vector<std::uint8_t>& keep)

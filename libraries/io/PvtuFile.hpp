@@ -22,6 +22,11 @@ namespace sph
 void writePvtu(const std::filesystem::path& file, const VtuData& layout,
                const std::vector<std::string>& pieces);
 
+// A .pvtu's pieces read and joined into one data set, the points in increasing `orderBy` (an
+// integer point array every piece holds, numbering the points 0 .. n-1 once each), with the
+// field data of the first piece. Errors are InputErrors naming the file.
+VtuData readPvtu(const std::filesystem::path& file, const std::string& orderBy);
+
 // The points with keep[p] != 0 of `data`, with their point arrays (field data unchanged).
 VtuData keepPoints(const VtuData& data, const std::vector<std::uint8_t>& keep);
 

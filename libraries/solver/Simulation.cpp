@@ -31,6 +31,7 @@ RunSummary Simulation<D>::run(RunLog& log)
     const bool restarted = control_.startFromLatest && restoreLatest(log);
     if (!restarted)
     {
+        comm_.barrier(); // every rank has looked through VTK/ before rank 0 clears it
         removeOldOutput();
     }
     if (comm_.parallel())

@@ -64,10 +64,6 @@ void Simulation<D>::checkDistributable() const
     {
         refuse("a material with a plastic history");
     }
-    if (control_.startFromLatest)
-    {
-        refuse("a restart (startFrom latestTime in system/controlDict)");
-    }
 }
 
 // Ghosts are needed as far as an owned particle's force reaches: the force on c gathers what its
@@ -296,6 +292,21 @@ void Simulation<D>::writePieces(const VtuData& data, double time)
     {
         writePvtu(folder / (stem + ".pvtu"), piece, pieces);
         pvd_.add(time, stem + ".pvtu");
+        // An output written again after a restart on fewer ranks: the surplus pieces go.
+        std::vector<std::filesystem::path> surplus;
+        for (const auto& file : std::filesystem::directory_iterator(folder / stem))
+        {
+            const std::string relative = stem + "/" + file.path().filename().string();
+            if (std::find(pieces.begin(), pieces.end(), relative) == pieces.end())
+            {
+                surplus.push_back(file.path());
+            }
+        }
+        for (const auto& file : surplus)
+        {
+            std::error_code ec;
+            std::filesystem::remove(file, ec);
+        }
     }
     lastOutputFile_ = stem + ".pvtu";
 }

@@ -5,6 +5,7 @@
 
 #include "core/InputError.hpp"
 #include "io/AtomicFile.hpp"
+#include "io/PvtuFile.hpp"
 #include "io/VtuFile.hpp"
 
 #include <nlohmann/json.hpp>
@@ -305,7 +306,16 @@ bool Simulation<D>::restoreLatest(RunLog& log)
         {
             continue;
         }
-        const VtuData data = readVtu(path);
+        // A distributed run's output (.pvtu) is read whole, in the order of the particle file,
+        // so it restarts on any number of ranks, or serially; a serial output restarts a
+        // distributed run with each particle's index as its global index.
+        VtuData data = path.extension() == ".pvtu" ? readPvtu(path, "globalId") : readVtu(path);
+        if (comm_.parallel() && data.pointData.count("globalId") == 0)
+        {
+            VtuArray ids{1, std::vector<double>(data.pointCount()), true, {}, {}};
+            std::iota(ids.values.begin(), ids.values.end(), 0.0);
+            data.pointData["globalId"] = ids;
+        }
         const auto& fields = data.fieldData;
         const auto number = [&](const std::string& name) -> std::optional<double> {
             const auto found = fields.find(restartPrefix + name);
@@ -355,14 +365,25 @@ bool Simulation<D>::restoreLatest(RunLog& log)
                 object->restoreState(own);
             }
         }
-        // This level is computed and written again; later outputs are stale.
+        // This level is computed and written again; later outputs are stale (rank 0 clears them;
+        // every rank keeps the same series). Not before every rank has read the series and its
+        // output: a rank that read the shortened series would restart from an older level.
+        comm_.barrier();
         pvd_.keepBefore(time_);
-        pvd_.write();
-        for (const auto& other : std::filesystem::directory_iterator(folder))
+        if (comm_.rank() == 0)
         {
-            if (outputIndexOf(other.path().filename().string(), caseName_) > outputIndex_)
+            pvd_.write();
+            std::vector<std::filesystem::path> stale;
+            for (const auto& other : std::filesystem::directory_iterator(folder))
             {
-                std::filesystem::remove(other.path());
+                if (outputIndexOf(other.path().filename().string(), caseName_) > outputIndex_)
+                {
+                    stale.push_back(other.path());
+                }
+            }
+            for (const auto& file : stale)
+            {
+                std::filesystem::remove_all(file);
             }
         }
         log.line("Restart     from " + path.filename().string() + " at step " +

@@ -1,10 +1,11 @@
-// compareOutputs <serial .vtu> <distributed .pvtu> [array...]
+// compareOutputs <serial .vtu> <distributed .pvtu, or another .vtu> [array...]
 //
 // Whether a distributed run's output is bit-identical to the serial run's: the .pvtu is read
 // with VTK's own parallel reader (vtkXMLPUnstructuredGridReader, what ParaView uses), so a pass
 // also shows that the pieces open as one dataset. Each particle is matched by its array
-// "globalId" (its index in the serial file); the points and every named array (default:
-// velocity, deformationGradient) must have the same bits. Prints what differs; exit 0 when
+// "globalId" (its index in the serial file; a .vtu without it is in the serial order); the
+// points and every named array (default: velocity, deformationGradient) must have the same
+// bits. (Whole files are not compared: the energy audit's restart sums may differ at round-off.) Prints what differs; exit 0 when
 // nothing does, 1 otherwise, 2 on bad usage or unreadable files.
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
@@ -59,9 +60,12 @@ int main(int argc, char** argv)
         names = {"velocity", "deformationGradient"};
     }
     const auto serial = read<vtkXMLUnstructuredGridReader>(argv[1]);
-    const auto distributed = read<vtkXMLPUnstructuredGridReader>(argv[2]);
+    const std::string second = argv[2];
+    const bool pieces = second.size() > 5 && second.compare(second.size() - 5, 5, ".pvtu") == 0;
+    const auto distributed = pieces ? read<vtkXMLPUnstructuredGridReader>(argv[2])
+                                    : read<vtkXMLUnstructuredGridReader>(argv[2]);
     vtkDataArray* ids = distributed->GetPointData()->GetArray("globalId");
-    if (!ids)
+    if (!ids && pieces)
     {
         std::cerr << "compareOutputs: " << argv[2] << " has no array globalId\n";
         return 2;
@@ -84,7 +88,7 @@ int main(int argc, char** argv)
     };
     for (vtkIdType p = 0; p < n; ++p)
     {
-        const auto g = static_cast<vtkIdType>(ids->GetTuple1(p));
+        const auto g = ids ? static_cast<vtkIdType>(ids->GetTuple1(p)) : p;
         if (g < 0 || g >= n || seen[static_cast<std::size_t>(g)]++)
         {
             std::cout << "globalId " << g << " is out of range or appears twice\n";

@@ -11,6 +11,9 @@
 #   migrating     bitIdentical, and the particles were partitioned again during the run
 #   sameFailure   exit 2 both (a numerical failure), the serial diagnosis line once, and the
 #                 last good level written bit-identical to the serial one
+#   restartOn:M:T the run stopped at time T on RANKS ranks, then continued to its endTime on M
+#                 ranks (M = 1: serially, without -parallel), ends bit-identical to the
+#                 uninterrupted serial run
 #   refused       exit 1 with the one "does not run on several ranks yet" message; no VTK/
 # The case is copied into a temporary folder (never written in place). -parallel goes last, so
 # columns in messages about the command line are those of the serial run.
@@ -156,6 +159,32 @@ sameFailure)
     "$bin/compareOutputs" "$work/serial/$name/VTK/$last" \
         "$work/parallel/$name/VTK/$(basename "$last" .vtu).pvtu" ||
         fail "the last good level differs from the serial one"
+    ;;
+restartOn:*)
+    IFS=: read -r _ continueRanks stopTime <<<"$check"
+    runSerial "$@"
+    expectCode "$serialCode" 0 "the serial run"
+    copyCase "$work/restarted"
+    dir="$work/restarted/$name"
+    (cd "$dir" && "$mpiexec" --oversubscribe -np "$ranks" "$bin/sphSolid" -case . "$@" \
+        -set endTime="$stopTime" -parallel >"$work/first.log" 2>&1)
+    expectCode "$?" 0 "the first part on $ranks ranks"
+    if [ "$continueRanks" = 1 ]; then
+        (cd "$dir" && "$bin/sphSolid" -case . "$@" -set controlDict.startFrom=latestTime \
+            >"$work/second.log" 2>&1)
+    else
+        (cd "$dir" && "$mpiexec" --oversubscribe -np "$continueRanks" "$bin/sphSolid" -case . "$@" \
+            -set controlDict.startFrom=latestTime -parallel >"$work/second.log" 2>&1)
+    fi
+    expectCode "$?" 0 "the continuation on $continueRanks ranks"
+    cat "$work/first.log" "$work/second.log"
+    grep -q "^Restart     from $name" "$work/second.log" || fail "the continuation did not restart"
+    last=$(grep -o 'file="[^"]*"' "$work/serial/$name/VTK/$name.pvd" | tail -1 | cut -d'"' -f2)
+    stem=$(basename "$last" .vtu)
+    ending="$stem.pvtu"
+    [ "$continueRanks" = 1 ] && ending="$stem.vtu"
+    "$bin/compareOutputs" "$work/serial/$name/VTK/$last" "$dir/VTK/$ending" ||
+        fail "$ending differs from the serial run's $last"
     ;;
 refused)
     runParallel "$@"

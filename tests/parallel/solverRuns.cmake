@@ -55,3 +55,14 @@ sph_add_solver_run("migrating particles bit-identical on 3 ranks" 3
                    -set endTime=0.01 -set writeInterval=0.0025 -set functions={}
                    -set bodies.plate.initialVelocity.spin.omega=40
                    -set controlDict.maxLoadImbalance=1.01)
+
+# Restart N -> M: stopped at 5 ms on N ranks, continued to 10 ms on M ranks (1: serially), the
+# end bit-identical to the uninterrupted serial run (UL gradF: the reference, the integrator and
+# the audit travel through the pieces).
+foreach(pair "2;3" "3;2" "2;1")
+    list(GET pair 0 first)
+    list(GET pair 1 second)
+    sph_add_solver_run("restart from ${first} on ${second} ranks bit-identical" ${first}
+                       ${sphTwistingColumn} restartOn:${second}:0.005 -threads 1
+                       -set endTime=0.01 -set writeInterval=0.0025 -set functions={})
+endforeach()
