@@ -9,6 +9,7 @@
 
 #include "core/Registry.hpp"
 #include "kernels/Kernel.hpp"
+#include "particles/ParticleRanks.hpp"
 #include "particles/ParticleSet.hpp"
 
 #include <functional>
@@ -29,6 +30,11 @@ struct ContactState
     // J_a = det F_a at x^{n+1} (the current volume is V0 J, spec §9), evaluated by the scheme
     // on demand: contact needs it only for the few particles near another body.
     std::function<double(std::size_t)> jacobian;
+    // A distributed run (null: serial). A rank holds ghosts reaching twice reach() in the
+    // current configuration; a model agrees with the other ranks on what it sums over whole
+    // bodies (bounding boxes), and takes from the owners what only they can compute (J, which
+    // reads a ghost's neighbours in the reference configuration).
+    const ParticleRanks* ranks = nullptr;
 };
 
 template <int D>
@@ -49,6 +55,10 @@ public:
     virtual bool active() const = 0;
     // Applies the velocity change; returns the velocity changes Δv (for the work accounting).
     virtual void apply(ContactState<D>& state, std::vector<Vec<D>>& deltaV) = 0;
+    // How far from a particle, in the current configuration, the model reads other particles:
+    // a distributed run keeps ghosts twice as far (a's change reads its neighbours b, and what
+    // b computed from b's own).
+    virtual double reach() const { return 0.0; }
     // Pairs of bodies searched in the last call (0 when none could touch).
     virtual std::size_t pairsSearched() const { return 0; }
 };

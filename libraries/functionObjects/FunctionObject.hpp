@@ -17,6 +17,7 @@
 #include "kernels/Kernel.hpp"
 #include "materials/Material.hpp"
 #include "particles/ParticleFields.hpp"
+#include "particles/ParticleRanks.hpp"
 #include "particles/ReferenceConfiguration.hpp"
 
 #include <filesystem>
@@ -74,6 +75,13 @@ struct StepState
     const EnergyBalance* energy = nullptr;
     // The walls' loads of this level (after the wall forces at x^n); null without walls.
     const WallLoads<D>* walls = nullptr;
+    // Which particles this rank owns, and the reductions over the ranks (serial: all, none).
+    const ParticleRanks* ranks = nullptr;
+    const ParticleRanks& rankView() const
+    {
+        static const ParticleRanks serial;
+        return ranks ? *ranks : serial;
+    }
 };
 
 template <int D>
@@ -94,6 +102,9 @@ public:
         ParticleFields<D>* fields = nullptr;
         const std::vector<std::string>* wallNames = nullptr; // constant/walls, in order
         bool artificialViscosity = false; // a viscosity other than `none` is selected
+        // A distributed run's ranks (null: serial); filled in before the first step, so a
+        // constructor may only keep the pointer.
+        const ParticleRanks* ranks = nullptr;
     };
 
     virtual ~FunctionObject() = default;
@@ -109,6 +120,10 @@ public:
         (void)time;
         return false;
     }
+    // Whether it runs on several ranks: visits only the particles of state.rankView() that
+    // count() and combines its results over the ranks (ParticleRanks). Otherwise a distributed
+    // run refuses the case (a rank holds ghosts too: it would count them).
+    virtual bool distributable() const { return false; }
     // Opens the output; a restart keeps the rows before `startTime` and appends.
     virtual void start(double startTime, bool restarted) = 0;
     virtual void execute(const StepState<D>& state) = 0;

@@ -29,7 +29,10 @@ public:
         {
             schedule_.restart();
         }
-        file_->open(startTime, restarted);
+        if (writer())
+        {
+            file_->open(startTime, restarted);
+        }
     }
     double nextWriteTime(double time, double deltaT) const override
     {
@@ -52,7 +55,7 @@ protected:
     FunctionObjectModel(const Params& params, const typename FunctionObject<D>::Args& args)
         : FunctionObject<D>(args.name),
           schedule_(params.real("writeInterval"), params.location("writeInterval")),
-          folder_(args.caseDir / "postProcessing" / args.name)
+          folder_(args.caseDir / "postProcessing" / args.name), ranks_(args.ranks)
     {
     }
 
@@ -64,9 +67,14 @@ protected:
     // Whether a row is due at this time level: the first level at or after each multiple of
     // the interval (deltaT: the step size, for a round-off tolerance).
     bool rowDue(double time, double deltaT) const { return schedule_.due(time, deltaT); }
+    // Every rank calls it with the same row (the objects reduce over the ranks first); the
+    // writer writes it.
     void writeRow(double time, double deltaT, const std::vector<double>& values)
     {
-        file_->write(time, values);
+        if (writer())
+        {
+            file_->write(time, values);
+        }
         if (!stepChecked_ && deltaT > 0.0)
         {
             schedule_.checkStep(deltaT);
@@ -76,12 +84,14 @@ protected:
     }
     double interval() const { return schedule_.interval(); }
     const std::filesystem::path& folder() const { return folder_; }
+    bool writer() const { return !ranks_ || ranks_->writer; }
 
 private:
     WriteSchedule schedule_;
     bool stepChecked_ = false; // the interval against the first step (checkStep)
     std::filesystem::path folder_;
     std::unique_ptr<DatFile> file_;
+    const ParticleRanks* ranks_ = nullptr; // a distributed run's (null: serial)
 };
 
 } // namespace sph

@@ -29,6 +29,14 @@ double allReduce(double value, MPI_Op op)
     check(MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, op, MPI_COMM_WORLD), "MPI_Allreduce");
     return result;
 }
+
+// Each element combined over the ranks by op, in place.
+void allReduce(std::vector<double>& values, MPI_Op op)
+{
+    check(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE,
+                        op, MPI_COMM_WORLD),
+          "MPI_Allreduce");
+}
 } // namespace
 
 MpiSession::MpiSession(int& argc, char**& argv)
@@ -77,6 +85,22 @@ double Communicator::minimum(double value) const
 double Communicator::maximum(double value) const
 {
     return parallel() ? allReduce(value, MPI_MAX) : value;
+}
+
+void Communicator::minimum(std::vector<double>& values) const
+{
+    if (parallel())
+    {
+        allReduce(values, MPI_MIN);
+    }
+}
+
+void Communicator::maximum(std::vector<double>& values) const
+{
+    if (parallel())
+    {
+        allReduce(values, MPI_MAX);
+    }
 }
 
 long long Communicator::sum(long long value) const

@@ -41,6 +41,9 @@ public:
 
     double minimum(double value) const;
     double maximum(double value) const;
+    // Element by element, in place (every rank gives the same count).
+    void minimum(std::vector<double>& values) const;
+    void maximum(std::vector<double>& values) const;
     long long sum(long long value) const;
     // Summed in rank order on every rank: the same bits everywhere.
     double sum(double value) const;

@@ -133,50 +133,75 @@ template <int D>
 void ParticleExchange<D>::addGhosts(ParticleFields<D>& fields, const std::vector<Vec<D>>& x,
                                     const std::vector<int>& globalId, double width)
 {
+    addGhosts(fields, {GhostReach{&x, width}}, globalId);
+}
+
+template <int D>
+void ParticleExchange<D>::addGhosts(ParticleFields<D>& fields,
+                                    const std::vector<GhostReach>& reaches,
+                                    const std::vector<int>& globalId)
+{
     removeGhosts(fields);
     const std::size_t n = fields.size();
-    if (x.size() != n || globalId.size() != n)
+    for (const GhostReach& reach : reaches)
     {
-        throw std::logic_error("ParticleExchange::addGhosts: one position and id per particle");
+        if (reach.x->size() != n || globalId.size() != n)
+        {
+            throw std::logic_error("ParticleExchange::addGhosts: one position and id per particle");
+        }
     }
-    // Every rank's box around its owned particles (an empty rank's box is empty: lo > hi).
-    std::vector<double> box(2 * D);
-    for (int d = 0; d < D; ++d)
+    // Every rank's box around its owned particles in each reach's positions (an empty rank's
+    // box is empty: lo > hi), rank after rank, then reach after reach.
+    std::vector<double> box;
+    for (const GhostReach& reach : reaches)
     {
-        box[d] = std::numeric_limits<double>::infinity();
-        box[D + d] = -std::numeric_limits<double>::infinity();
-    }
-    for (const Vec<D>& p : x)
-    {
+        const std::size_t first = box.size();
+        box.resize(first + 2 * D);
         for (int d = 0; d < D; ++d)
         {
-            box[d] = std::min(box[d], p[d]);
-            box[D + d] = std::max(box[D + d], p[d]);
+            box[first + d] = std::numeric_limits<double>::infinity();
+            box[first + D + d] = -std::numeric_limits<double>::infinity();
+        }
+        for (const Vec<D>& p : *reach.x)
+        {
+            for (int d = 0; d < D; ++d)
+            {
+                box[first + d] = std::min(box[first + d], p[d]);
+                box[first + D + d] = std::max(box[first + D + d], p[d]);
+            }
         }
     }
     const std::vector<double> boxes = comm_.gather(box);
     const auto ranks = static_cast<std::size_t>(comm_.size());
     const auto me = static_cast<std::size_t>(comm_.rank());
+    const auto within = [](const double* lo, const Vec<D>& p, double width) {
+        const double* hi = lo + D;
+        double distance2 = 0.0;
+        for (int d = 0; d < D; ++d)
+        {
+            const double outside = std::max({0.0, lo[d] - p[d], p[d] - hi[d]});
+            distance2 += outside * outside;
+        }
+        return lo[0] <= hi[0] && distance2 <= width * width;
+    };
 
     sendTo_.assign(ranks, {});
     std::vector<Rows> toEach(ranks);
     for (std::size_t r = 0; r < ranks; ++r)
     {
-        const double* lo = &boxes[r * 2 * D];
-        const double* hi = lo + D;
-        if (r == me || lo[0] > hi[0])
+        if (r == me)
         {
             continue;
         }
         for (std::size_t a = 0; a < n; ++a)
         {
-            double distance2 = 0.0;
-            for (int d = 0; d < D; ++d)
+            bool wanted = false;
+            for (std::size_t i = 0; i < reaches.size() && !wanted; ++i)
             {
-                const double outside = std::max({0.0, lo[d] - x[a][d], x[a][d] - hi[d]});
-                distance2 += outside * outside;
+                wanted = within(&boxes[(r * reaches.size() + i) * 2 * D], (*reaches[i].x)[a],
+                                reaches[i].width);
             }
-            if (distance2 <= width * width)
+            if (wanted)
             {
                 sendTo_[r].push_back(a);
                 appendRow(fields, a, globalId[a], toEach[r]);
@@ -283,6 +308,36 @@ void ParticleExchange<D>::updateGhosts(ParticleFields<D>& fields,
                 arrays[f]->set(slot, in);
                 in += components[f];
             }
+        }
+    }
+}
+
+template <int D>
+void ParticleExchange<D>::updateGhostValues(std::vector<double>& values)
+{
+    if (values.size() != ownedCount_ + ghostCount_)
+    {
+        throw std::logic_error("ParticleExchange::updateGhostValues: one value per local particle");
+    }
+    std::vector<Rows> toEach(static_cast<std::size_t>(comm_.size()));
+    for (std::size_t r = 0; r < sendTo_.size(); ++r)
+    {
+        for (const std::size_t a : sendTo_[r])
+        {
+            toEach[r].push_back(values[a]);
+        }
+    }
+    countSent(toEach);
+    const std::vector<Rows> received = comm_.exchange(toEach);
+    for (std::size_t r = 0; r < receiveAt_.size(); ++r)
+    {
+        if (received[r].size() != receiveAt_[r].size())
+        {
+            throw std::logic_error("ParticleExchange::updateGhostValues: ranks disagree on the ghosts");
+        }
+        for (std::size_t k = 0; k < receiveAt_[r].size(); ++k)
+        {
+            values[receiveAt_[r][k]] = received[r][k];
         }
     }
 }

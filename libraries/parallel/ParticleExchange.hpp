@@ -55,8 +55,24 @@ public:
     void addGhosts(ParticleFields<D>& fields, const std::vector<Vec<D>>& x,
                    const std::vector<int>& globalId, double width);
 
+    // Several reaches: a particle is a ghost of a rank when it is within any reach's width of
+    // that rank's owned particles, in that reach's positions (e.g. two search radii in the
+    // reference configuration, and the contact range in the current one).
+    struct GhostReach
+    {
+        const std::vector<Vec<D>>* x; // per local particle (owned: the ghosts are removed first)
+        double width;
+    };
+    void addGhosts(ParticleFields<D>& fields, const std::vector<GhostReach>& reaches,
+                   const std::vector<int>& globalId);
+
     // Copies the owners' values of the named stored fields onto the ghosts. Collective.
     void updateGhosts(ParticleFields<D>& fields, const std::vector<std::string>& names);
+
+    // Copies the owners' values onto the ghosts for a per-local-particle array that is not a
+    // stored field (a quantity computed on the owned particles and read at their ghosts, e.g.
+    // the current volumes of contact). Collective.
+    void updateGhostValues(std::vector<double>& values);
 
     // Drops the ghosts: the local particles are the owned ones again, in the same order.
     void removeGhosts(ParticleFields<D>& fields);

@@ -26,6 +26,7 @@
 #include <Eigen/SVD>
 
 #include <cmath>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -49,10 +50,12 @@ struct CorrectedGradient
     // Computes L, e and C from the per-pair gradients d(a, k) (k a slot of a's list; the self
     // slot is ignored). Returns the index of the first particle whose M_a is singular (det
     // below 1e-8: too few neighbours to span every direction), or -1; such particles get the
-    // regularised L_a and C_a too.
+    // regularised L_a and C_a too. With `counted` (a distributed run's owned particles), only
+    // those are reported: a ghost's neighbourhood may be cut at the edge of its rank's particles.
     template <class Gradient>
     long build(const NeighbourList& list, const std::vector<Vec<D>>& x,
-               const std::vector<double>& V, const Gradient& d);
+               const std::vector<double>& V, const Gradient& d,
+               const std::vector<std::uint8_t>* counted = nullptr);
 
     // f_a = moment_a L_a^T + C_a from moment_a = Σ_{b≠a} V_b x_ba ⊗ d_ab at the current x.
     Mat<D> deformation(std::size_t a, const Mat<D>& moment) const
@@ -69,7 +72,8 @@ struct CorrectedGradient
 template <int D>
 template <class Gradient>
 long CorrectedGradient<D>::build(const NeighbourList& list, const std::vector<Vec<D>>& x,
-                                 const std::vector<double>& V, const Gradient& d)
+                                 const std::vector<double>& V, const Gradient& d,
+                                 const std::vector<std::uint8_t>* counted)
 {
     const std::size_t n = list.particleCount();
     L.resize(n);
@@ -92,7 +96,7 @@ long CorrectedGradient<D>::build(const NeighbourList& list, const std::vector<Ve
         // M ≈ I on a regular cloud; a (near-)singular M means too few neighbours or all on a
         // line/plane: the gradient cannot be corrected in every direction there.
         const double det = M.determinant();
-        if (!(std::abs(det) > 1.0e-8) || !std::isfinite(det))
+        if ((!(std::abs(det) > 1.0e-8) || !std::isfinite(det)) && (!counted || (*counted)[a]))
         {
             singular = std::max<long>(singular, static_cast<long>(n - a)); // max → smallest a
         }

@@ -25,11 +25,17 @@ namespace
 {
 
 // A uniform grid of cells over the bounding box of `points`, with the points sorted by cell.
+// The cells are a millionth wider than asked: two points closer than `cellSize` then always fall
+// in adjacent cells, whatever the rounding of their cell coordinates (relative error below
+// 1e-9 with at most 10^6 cells per direction). Without that margin a pair a hair's breadth
+// inside the radius is found or not depending on where the grid starts, that is on which other
+// points are searched: a distributed run's ranks, holding different points, would then differ
+// from the serial run (a lattice pair at exactly the support radius did).
 template <int D>
 class CellGrid
 {
 public:
-    CellGrid(const std::vector<Vec<D>>& points, double cellSize) : cellSize_(cellSize)
+    CellGrid(const std::vector<Vec<D>>& points, double cellSize) : cellSize_(cellSize * (1.0 + 1e-6))
     {
         if (!(cellSize > 0.0) || !std::isfinite(cellSize))
         {

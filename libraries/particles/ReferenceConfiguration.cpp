@@ -80,7 +80,7 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
         }
     }
     return gradient.build(neighbours, x, V,
-                          [this](std::size_t a, std::size_t k) { return gradW(a, k); });
+                          [this](std::size_t a, std::size_t k) { return gradW(a, k); }, owned);
 }
 
 template struct ReferenceConfiguration<1>;

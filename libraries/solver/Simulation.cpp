@@ -112,9 +112,9 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         }
         commitHistory();
         drift(dt);
+        refreshGhostPositions();
         applyContact(dt);
         checkOrder(dt);
-        refreshGhostPositions();
         time_ = step.landsOnTarget ? step.target : time_ + dt;
         ++step_;
     }
@@ -351,7 +351,8 @@ void Simulation<D>::observe(RunLog& log, double dt, double strainEnergy, bool wa
     }
     const StepState<D> state{step_,       time_,      dt,        particles_,
                              velocitySync_, reference_->reference(), *kernel_, bodyNames_,
-                             wantEnergy ? &balance : nullptr, walls_->empty() ? nullptr : &walls};
+                             wantEnergy ? &balance : nullptr, walls_->empty() ? nullptr : &walls,
+                             &ranks_};
     for (auto& object : functionObjects_)
     {
         object->execute(state);
@@ -390,11 +391,16 @@ void Simulation<D>::applyContact(double dt)
     {
         return;
     }
+    if (distributed() && contactRegatherDue())
+    {
+        regather();
+    }
     ContactState<D> state{particles_.x, particles_.v, particles_, dt, [this](std::size_t a) {
                               return scheme_->deformationGradient(a, particles_.x,
                                                                   reference_->reference())
                                   .determinant();
                           }};
+    state.ranks = distributed() ? &ranks_ : nullptr;
     contact_->apply(state, contactDeltaV_);
     audit_.addContactKick(particles_.m, contactDeltaV_, particles_.v, dt);
 }

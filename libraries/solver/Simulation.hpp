@@ -130,9 +130,10 @@ private:
     bool distributed() const { return exchange_ != nullptr; }
     void checkDistributable() const;   // the models a distributed run supports, else InputError
     void distribute();                 // every rank's whole set -> owned particles + ghosts
+    void shareRanks();                 // ranks_: owned particles, reductions, the writer
     bool regatherDue() const;          // a particle moved more than half the ghosts' skin
     void regather();                   // new ghosts around the owned particles (after a move of
-                                       //   the reference configuration)
+                                       //   the reference configuration, or contact's drift)
     void localParticlesChanged();      // body ranges, owned mask, reference data of the new set
     void refreshGhosts(const std::vector<std::string>& names); // owners' values -> ghosts
     void refreshGhostPositions();      // x^{n+1} of the owners (each step)
@@ -141,6 +142,11 @@ private:
     void checkStatus(const ForceStatus& status, const std::string& when);
     double ghostWidth() const;         // how far from its owned particles a rank needs ghosts
     double ghostSkin() const;          // the part of it that lets particles move between gathers
+    double contactGhostWidth() const;  // the same for contact, in the current configuration
+    double contactSkin() const;
+    bool contactRegatherDue() const;   // a particle moved more than half the contact skin
+    bool movedFarther(const std::vector<Vec<D>>& now, const std::vector<Vec<D>>& then,
+                      double distance) const; // some owned particle, on any rank
     long globalIndex(std::size_t a) const; // the particle's index in the whole set
     std::string distributionReport(long steps) const; // repartitions, ghosts, bytes per step
     void writePieces(const VtuData& data, double time); // this rank's piece (+ .pvtu on rank 0)
@@ -206,10 +212,12 @@ private:
     std::unique_ptr<ParticleExchange<D>> exchange_;
     std::vector<int> globalId_;
     std::vector<std::uint8_t> owned_;
+    ParticleRanks ranks_; // what the models see of it (serial: every particle, no reductions)
     std::size_t globalCount_ = 0; // particles in the whole set
     long repartitions_ = 0;       // migrations after the start (maxLoadImbalance)
     long gathers_ = 0;            // ghost layers gathered (the start, then as particles move)
     std::vector<Vec<D>> gatheredAt_; // the local particles' x^r when the ghosts were gathered
+    std::vector<Vec<D>> gatheredX_;  // and their x (contact)
     std::string lastOutputFile_;  // in VTK/, the last output written (.vtu or .pvtu)
 };
 

@@ -37,16 +37,13 @@ void Simulation<D>::checkDistributable() const
         throw InputError(what + " does not run on several ranks yet",
                          {"A distributed run (sphSolid -parallel on more than one rank) supports "
                           "2D and 3D cases with any kernel, formulation and stabilisation, elastic "
-                          "materials, gravity and fixed particles; run this case serially (or on "
+                          "materials, contact between bodies, gravity, fixed particles and function "
+                          "objects; run this case serially (or on "
                           "one rank) until the rest lands (docs/parallel.md)."});
     };
     if (D == 1)
     {
         refuse("a 1D case");
-    }
-    if (contact_->active())
-    {
-        refuse("contact between bodies (contact in system/sphSchemes)");
     }
     if (!walls_->empty())
     {
@@ -56,9 +53,12 @@ void Simulation<D>::checkDistributable() const
     {
         refuse("artificial viscosity (artificialViscosity in system/sphSchemes)");
     }
-    if (!functionObjects_.empty())
+    for (const auto& object : functionObjects_)
     {
-        refuse("a case with function objects (functions in system/controlDict)");
+        if (!object->distributable())
+        {
+            refuse("function object '" + object->name() + "' (" + object->summary() + ")");
+        }
     }
     if (historyMaterials_)
     {
@@ -83,6 +83,20 @@ double Simulation<D>::ghostSkin() const
     return 0.5 * scheme_->referenceNeeds(*kernel_).searchRadius;
 }
 
+// Contact reads, in the current configuration, a particle's neighbours within the model's reach
+// and what those computed from their own (contact/Contact.hpp): two reaches, plus a skin.
+template <int D>
+double Simulation<D>::contactGhostWidth() const
+{
+    return 2.0 * contact_->reach() + contactSkin();
+}
+
+template <int D>
+double Simulation<D>::contactSkin() const
+{
+    return 0.5 * contact_->reach();
+}
+
 // While no particle's x^r has moved more than half the skin since the ghosts were gathered,
 // every particle within two radii of an owned one is still among them: the owned particles and
 // the one that would be missing have each moved less than half the skin. The maximum is over
@@ -90,17 +104,31 @@ double Simulation<D>::ghostSkin() const
 template <int D>
 bool Simulation<D>::regatherDue() const
 {
-    const std::vector<Vec<D>>& x = reference_->reference().x;
+    return movedFarther(reference_->reference().x, gatheredAt_, 0.5 * ghostSkin());
+}
+
+// The same for the contact ghosts, in the current configuration: checked after each drift
+// (particles move every step; the reference only at its moves).
+template <int D>
+bool Simulation<D>::contactRegatherDue() const
+{
+    return movedFarther(particles_.x, gatheredX_, 0.5 * contactSkin());
+}
+
+// Whether some owned particle, on any rank, is farther than `distance` from where it was.
+template <int D>
+bool Simulation<D>::movedFarther(const std::vector<Vec<D>>& now, const std::vector<Vec<D>>& then,
+                                 double distance) const
+{
     double moved2 = 0.0;
-    for (std::size_t a = 0; a < x.size(); ++a)
+    for (std::size_t a = 0; a < now.size(); ++a)
     {
         if (owned_[a])
         {
-            moved2 = std::max(moved2, (x[a] - gatheredAt_[a]).squaredNorm());
+            moved2 = std::max(moved2, (now[a] - then[a]).squaredNorm());
         }
     }
-    const double half = 0.5 * ghostSkin();
-    return comm_.maximum(moved2) > half * half;
+    return comm_.maximum(moved2) > distance * distance;
 }
 
 template <int D>
@@ -115,6 +143,7 @@ void Simulation<D>::distribute()
     checkDistributable();
     globalCount_ = particles_.size();
     exchange_ = std::make_unique<ParticleExchange<D>>(comm_);
+    shareRanks();
     audit_.countOwned(&owned_, [this](double local) { return comm_.sum(local); });
     // Every rank holds the whole set: each keeps an equal share, then RCB makes the shares
     // compact regions (the same partition on every run with the same ranks).
@@ -129,8 +158,51 @@ void Simulation<D>::distribute()
     regather();
 }
 
+// What the models see of the ranks (particles/ParticleRanks.hpp): the function objects visit
+// the owned particles and reduce over the ranks, rank 0 writing postProcessing/; contact agrees
+// on the bodies' boxes and takes the ghosts' current volumes from their owners.
+template <int D>
+void Simulation<D>::shareRanks()
+{
+    ranks_.owned = &owned_;
+    ranks_.globalId = &globalId_;
+    ranks_.writer = comm_.rank() == 0;
+    ranks_.minimumOverRanks = [this](std::vector<double>& values) { comm_.minimum(values); };
+    ranks_.maximumOverRanks = [this](std::vector<double>& values) { comm_.maximum(values); };
+    ranks_.sumOverRanks = [this](std::vector<double>& values) {
+        const std::vector<double> all = comm_.gather(values);
+        const std::size_t n = values.size();
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            double total = 0.0;
+            for (std::size_t r = 0; r < static_cast<std::size_t>(comm_.size()); ++r)
+            {
+                total += all[r * n + i];
+            }
+            values[i] = total;
+        }
+    };
+    ranks_.ownersToGhosts = [this](std::vector<double>& values) {
+        exchange_->updateGhostValues(values);
+    };
+    ranks_.gatherOnWriter = [this](const std::vector<double>& values) {
+        std::vector<std::vector<double>> toEach(static_cast<std::size_t>(comm_.size()));
+        toEach[0] = values;
+        std::vector<double> joined;
+        for (const std::vector<double>& from : comm_.exchange(toEach))
+        {
+            joined.insert(joined.end(), from.begin(), from.end());
+        }
+        return joined;
+    };
+}
+
 // The ghosts are chosen in the reference configuration, where the neighbour lists are built:
-// X for a total-Lagrangian run, x^r for an updated-Lagrangian one (called after each move).
+// X for a total-Lagrangian run, x^r for an updated-Lagrangian one (called after a move); with
+// contact, also in the current configuration x (called after a drift). A contact ghost may lie
+// far from the rank's particles in the reference configuration, where its neighbourhood is cut:
+// what the rank computes for it there is wrong and read by nothing (its failures do not count,
+// its F and P are its owner's after the forces, its J comes from its owner).
 //
 // Before, the particles are partitioned again (RCB at these positions) when the ranks' loads
 // have drifted apart by more than maxLoadImbalance (controlDict): a rank computes its owned
@@ -151,9 +223,15 @@ void Simulation<D>::regather()
         exchange_->migrate(fields_, globalId_, rcbOwners<D>(comm_, positions, ids));
         ++repartitions_;
     }
-    exchange_->addGhosts(fields_, positions, globalId_, ghostWidth());
+    std::vector<typename ParticleExchange<D>::GhostReach> reaches{{&positions, ghostWidth()}};
+    if (contact_->active())
+    {
+        reaches.push_back({&particles_.x, contactGhostWidth()});
+    }
+    exchange_->addGhosts(fields_, reaches, globalId_);
     localParticlesChanged();
     gatheredAt_ = positions;
+    gatheredX_ = particles_.x;
     ++gathers_;
 }
 
@@ -191,18 +269,9 @@ void Simulation<D>::localParticlesChanged()
     const ForceStatus status = formulation_->updatesReference()
                                    ? reference_->restored(particles_)
                                    : reference_->initialise(particles_);
-    if (!status.ok())
-    {
-        // The whole set passed this check at setup: a singular neighbourhood now can only be a
-        // ghost's, cut at the edge of the ghost layer (its owner's is whole).
-        if (owned_[static_cast<std::size_t>(status.badParticle)])
-        {
-            checkStatus(status, "rebuilding the reference configuration of a rank's particles");
-        }
-        throw std::logic_error("ghost particle " + std::to_string(globalIndex(
-                                   static_cast<std::size_t>(status.badParticle))) +
-                               " has a singular neighbourhood: the ghost layer is too thin");
-    }
+    // Only owned particles are checked (a ghost's neighbourhood may be cut where the rank's
+    // particles end), and theirs are whole: the serial run's, which passed at setup.
+    checkStatus(status, "rebuilding the reference configuration of a rank's particles");
 }
 
 template <int D>

@@ -205,6 +205,7 @@ void Simulation<D>::setupFunctionObjects()
         args.fields = &fields_;
         args.wallNames = &walls_->names();
         args.artificialViscosity = viscosity_->active();
+        args.ranks = &ranks_;
         functionObjects_.push_back(selectModel<FunctionObject<D>>(
             entry.dict(), args, D, Selection::withBodies(bodyNames_)));
     }

@@ -29,6 +29,13 @@ TEST_CASE("communicator: minimum, maximum and sums over the ranks", "[parallel]"
     const double sum = comm.sum(0.1 * (comm.rank() + 1));
     CHECK(sum == expected);
     CHECK(comm.maximum(sum) == comm.minimum(sum)); // the same on every rank
+    // Element by element: rank r gives (r, -r, 5).
+    std::vector<double> low{1.0 * comm.rank(), -1.0 * comm.rank(), 5.0};
+    std::vector<double> high = low;
+    comm.minimum(low);
+    comm.maximum(high);
+    CHECK(low == std::vector<double>{0.0, 1.0 - n, 5.0});
+    CHECK(high == std::vector<double>{n - 1.0, 0.0, 5.0});
     const std::vector<double> all = comm.gather(static_cast<double>(comm.rank()));
     REQUIRE(all.size() == static_cast<std::size_t>(n));
     for (int r = 0; r < n; ++r)

@@ -199,6 +199,72 @@ TEST_CASE("exchange: particles migrate and are ghosted with every stored field, 
         CHECK_THROWS_AS(exchange.updateGhosts(p.fields, {"nothing"}), std::logic_error);
     }
 
+    SECTION("owners' values of an array outside the registry reach the ghosts")
+    {
+        std::vector<double> values(p.id.size());
+        for (std::size_t a = 0; a < p.id.size(); ++a)
+        {
+            values[a] = exchange.owned(a) ? 1.5 * p.id[a] : std::nan("");
+        }
+        exchange.updateGhostValues(values);
+        for (std::size_t a = 0; a < p.id.size(); ++a)
+        {
+            REQUIRE(values[a] == 1.5 * p.id[a]);
+        }
+        std::vector<double> wrongSize(p.id.size() + 1);
+        CHECK_THROWS_AS(exchange.updateGhostValues(wrongSize), std::logic_error);
+    }
+
+    SECTION("a second reach, in other positions, adds the particles near there")
+    {
+        // As contact does: the reference positions' two radii, and a narrower reach in the
+        // current positions, where body 1 has moved 0.3 m to the left over body 0.
+        const auto currentOf = [](int g) {
+            Vec<2> x = positionOf(g, 0.0);
+            x[0] -= g >= firstOfBody1 ? 0.3 : 0.0;
+            return x;
+        };
+        exchange.removeGhosts(p.fields);
+        std::vector<Vec<2>> current(p.id.size());
+        for (std::size_t a = 0; a < p.id.size(); ++a)
+        {
+            current[a] = currentOf(p.id[a]);
+        }
+        const double reach = 1.1 * spacing;
+        p.fields.bind(FieldSpec::vector("current", "x now").restart(), current);
+        exchange.addGhosts(p.fields, {{&p.x, 2.0 * radius}, {&current, reach}}, p.id);
+        CHECK(std::adjacent_find(p.id.begin(), p.id.end(), std::greater_equal<>()) == p.id.end());
+        checkValues(p, 0.0, 0.0);
+        checkNeighbourOrder(p, exchange, 0.0, radius);
+        // Every particle within `reach` of an owned one in the current positions is local.
+        std::vector<Vec<2>> allCurrent;
+        for (int g = 0; g < total; ++g)
+        {
+            allCurrent.push_back(currentOf(g));
+        }
+        std::size_t checked = 0;
+        for (std::size_t a = 0; a < p.id.size(); ++a)
+        {
+            REQUIRE(current[a] == allCurrent[static_cast<std::size_t>(p.id[a])]);
+            if (!exchange.owned(a))
+            {
+                continue;
+            }
+            for (int g = 0; g < total; ++g)
+            {
+                if ((allCurrent[static_cast<std::size_t>(g)] - current[a]).norm() <= reach)
+                {
+                    INFO("particle " << g << " near owned particle " << p.id[a]);
+                    REQUIRE(std::binary_search(p.id.begin(), p.id.end(), g));
+                    ++checked;
+                }
+            }
+        }
+        CHECK(comm.sum(static_cast<long long>(checked)) > total);
+        const std::vector<Vec<2>> tooMany(total + 1, Vec<2>::Zero()); // one per particle, or misuse
+        CHECK_THROWS_AS(exchange.addGhosts(p.fields, {{&tooMany, reach}}, p.id), std::logic_error);
+    }
+
     SECTION("a body moved across the partition migrates, and the order holds again")
     {
         // Body 1 jumps by 0.25 m to the right: a third of the domain's width.

@@ -7,13 +7,14 @@
 #   dryRunOnce    -dryRun: exit 0, the header and the "Dry run" line once, "Ranks  RANKS"
 #   sameResults   exit 0 both, and VTK/ and postProcessing/*/*.dat identical (cmp) to serial
 #   bitIdentical  exit 0 both, and every output VTK/NAME_<n>.pvtu (read with VTK's parallel
-#                 reader) bit-identical to the serial VTK/NAME_<n>.vtu: positions, velocities, F
+#                 reader) bit-identical to the serial VTK/NAME_<n>.vtu: positions, velocities, F;
+#                 the function objects' tables identical (the energy balance to round-off)
 #   migrating     bitIdentical, and the particles were partitioned again during the run
 #   sameFailure   exit 2 both (a numerical failure), the serial diagnosis line once, and the
 #                 last good level written bit-identical to the serial one
 #   restartOn:M:T the run stopped at time T on RANKS ranks, then continued to its endTime on M
 #                 ranks (M = 1: serially, without -parallel), ends bit-identical to the
-#                 uninterrupted serial run
+#                 uninterrupted serial run, with its tables (as bitIdentical)
 #   refused       exit 1 with the one "does not run on several ranks yet" message; no VTK/
 # The case is copied into a temporary folder (never written in place). -parallel goes last, so
 # columns in messages about the command line are those of the serial run.
@@ -64,7 +65,11 @@ copyCase()
 {
     mkdir -p "$1" && cp -r "$case" "$1/$name"
     if [ ! -e "$1/$name/constant/particles.vtu" ] && [ -e "$1/$name/system/particlesDict" ]; then
-        (cd "$1/$name" && "$bin/sphParticles" -case . >/dev/null) || fail "sphParticles failed"
+        # SPH_PARTICLES_SET: -set options for sphParticles, space-separated (a coarser lattice)
+        local options=()
+        for option in ${SPH_PARTICLES_SET:-}; do options+=(-set "$option"); done
+        (cd "$1/$name" && "$bin/sphParticles" -case . "${options[@]}" >/dev/null) ||
+            fail "sphParticles failed"
     fi
 }
 
@@ -89,6 +94,40 @@ runParallel()
     if echo "$output" | grep -qE "Segmentation|terminate called|core dumped|MPI_ABORT"; then
         fail "a rank crashed or aborted instead of reporting the error"
     fi
+}
+
+# The function objects' tables (postProcessing/*/*.dat) of the two runs: identical, byte for
+# byte, but for the energy balance, sums over the ranks that may differ at round-off: every
+# value within 1e-9 of the largest magnitude in the table (the kinetic or total energy; a
+# momentum that is zero to round-off has no scale of its own).
+# Usage: compareTables [the parallel run's case folder]
+compareTables()
+{
+    local serialTables parallelTables file other=${1:-$work/parallel/$name}
+    serialTables=$(cd "$work/serial/$name" && find postProcessing -name "*.dat" 2>/dev/null | sort)
+    parallelTables=$(cd "$other" && find postProcessing -name "*.dat" 2>/dev/null | sort)
+    [ "$serialTables" = "$parallelTables" ] ||
+        fail "different tables: serial ($serialTables) parallel ($parallelTables)"
+    for file in $serialTables; do
+        if [ "$(basename "$(dirname "$file")")" = energy ]; then
+            awk 'NR == FNR { line[FNR] = $0; n1 = FNR; next }
+                 /^#/ { if ($0 != line[FNR]) bad = 1; next }
+                 { n = split(line[FNR], s); if (n != NF) bad = 1
+                   for (i = 1; i <= NF; ++i) { v[FNR, i] = $i; w[FNR, i] = s[i]
+                     m = $i < 0 ? -$i : $i; if (i > 1 && m > top) top = m } rows = FNR; cols = NF }
+                 END { if (rows != n1) bad = 1
+                       for (r = 1; r <= rows; ++r) {
+                         if (v[r, 1] != w[r, 1]) bad = 1
+                         for (i = 2; i <= cols; ++i) {
+                           d = v[r, i] - w[r, i]; if (d < 0) d = -d
+                           if (d > 1e-9 * top) bad = 1 } }
+                       exit bad }' "$work/serial/$name/$file" "$other/$file" ||
+                fail "$file differs beyond round-off"
+        else
+            cmp "$work/serial/$name/$file" "$other/$file" || fail "$file differs"
+        fi
+    done
+    [ -z "$serialTables" ] || echo "compared $(echo "$serialTables" | wc -l) postProcessing tables"
 }
 
 case $check in
@@ -141,6 +180,7 @@ bitIdentical | migrating)
     parallelTimes=$(grep -o 'timestep="[^"]*"' "$work/parallel/$name/VTK/$name.pvd")
     [ "$serialTimes" = "$parallelTimes" ] || fail "the .pvd series list other times"
     echo "compared $outputs outputs"
+    compareTables
     if [ "$check" = migrating ]; then
         echo "$output" | grep -qE "^Ranks +$ranks: .* [1-9][0-9]* repartitions" ||
             fail "no repartition during the run"
@@ -185,6 +225,7 @@ restartOn:*)
     [ "$continueRanks" = 1 ] && ending="$stem.vtu"
     "$bin/compareOutputs" "$work/serial/$name/VTK/$last" "$dir/VTK/$ending" ||
         fail "$ending differs from the serial run's $last"
+    compareTables "$dir"
     ;;
 refused)
     runParallel "$@"

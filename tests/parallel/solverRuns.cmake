@@ -66,3 +66,50 @@ foreach(pair "2;3" "3;2" "2;1")
                        ${sphTwistingColumn} restartOn:${second}:0.005 -threads 1
                        -set endTime=0.01 -set writeInterval=0.0025 -set functions={})
 endforeach()
+
+# Contact between bodies on different ranks: the colliding rings (seed §3.2) on a 2 mm lattice
+# (1120 particles), to 20 ms: the rings meet at about 3.4 ms (within the 6 mm kernel support)
+# and are pressed together to the end. RCB puts the rings on different ranks (2) or splits
+# them (3, 4); the contact ghosts are gathered again as the rings move. Updated-Lagrangian gradF
+# on 2, 3, 4 ranks, total-Lagrangian gradF on 2 and 3 (its contact ghosts have cut
+# neighbourhoods in X, which nothing may read).
+set(sphCollidingRings ${CMAKE_SOURCE_DIR}/tutorials/rings2D/collidingRings)
+set(sphCoarseRings "ringA.spacing=2e-3 ringB.spacing=2e-3")
+foreach(ranks 2 3 4)
+    sph_add_solver_run("rings with contact UL gradF bit-identical on ${ranks} ranks" ${ranks}
+                       ${sphCollidingRings} bitIdentical -threads 1 -set endTime=0.02
+                       -set writeInterval=0.004 -set functions={} -set courant=0.3)
+    set_property(TEST "parallel:sphSolid rings with contact UL gradF bit-identical on ${ranks} ranks"
+                 APPEND PROPERTY ENVIRONMENT "SPH_PARTICLES_SET=${sphCoarseRings}")
+endforeach()
+foreach(ranks 2 3)
+    sph_add_solver_run("rings with contact TL gradF bit-identical on ${ranks} ranks" ${ranks}
+                       ${sphCollidingRings} bitIdentical -threads 1 -set endTime=0.02
+                       -set writeInterval=0.004 -set functions={} -set courant=0.3
+                       -set formulation.type=totalLagrangian)
+    set_property(TEST "parallel:sphSolid rings with contact TL gradF bit-identical on ${ranks} ranks"
+                 APPEND PROPERTY ENVIRONMENT "SPH_PARTICLES_SET=${sphCoarseRings}")
+endforeach()
+
+# Function objects on several ranks: each visits the owned particles, reduces over the ranks, and
+# rank 0 writes postProcessing/. The flagship tutorial as it is (extent, energy, stability monitor,
+# snapshots of every particle) on the coarse lattice, and the twisting column's own (a probe at
+# the free corner, energy, stability monitor): every table identical to the serial run's but
+# the energy balance (a sum over the ranks: round-off).
+foreach(ranks 2 3)
+    sph_add_solver_run("flagship rings with function objects bit-identical on ${ranks} ranks" ${ranks}
+                       ${sphCollidingRings} bitIdentical -threads 1 -set endTime=0.02
+                       -set writeInterval=0.01 -set courant=0.3)
+    set_property(TEST "parallel:sphSolid flagship rings with function objects bit-identical on ${ranks} ranks"
+                 APPEND PROPERTY ENVIRONMENT "SPH_PARTICLES_SET=${sphCoarseRings}")
+endforeach()
+sph_add_solver_run("column with function objects bit-identical on 2 ranks" 2 ${sphTwistingColumn}
+                   bitIdentical -threads 1 -set endTime=0.01 -set writeInterval=0.005)
+sph_add_solver_run("restart from 2 on 3 ranks with function objects" 2 ${sphTwistingColumn}
+                   restartOn:3:0.005 -threads 1 -set endTime=0.01 -set writeInterval=0.0025)
+
+# The flagship tutorial copied out of the tree and run as its README says: ./Allrun -np 2.
+add_test(NAME "parallel:flagship Allrun -np 2 from a copy"
+         COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/allrunParallel.sh ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR})
+set_tests_properties("parallel:flagship Allrun -np 2 from a copy" PROPERTIES
+    TIMEOUT 300 ENVIRONMENT "OMP_WAIT_POLICY=passive")

@@ -66,11 +66,13 @@ public:
     }
 
     bool active() const override { return true; }
+    double reach() const override { return kernel_.supportRadius(); }
     std::size_t pairsSearched() const override { return pairsSearched_; }
 
     void apply(ContactState<D>& state, std::vector<Vec<D>>& deltaV) override
     {
         const ParticleSet<D>& p = state.particles;
+        const ParticleRanks* ranks = state.ranks;
         const std::size_t bodies = p.bodies.size();
         deltaV.assign(p.size(), Vec<D>::Zero());
         pairsSearched_ = 0;
@@ -98,6 +100,10 @@ public:
     if (useThreads(last - first))
             for (std::size_t a = first; a < last; ++a)
             {
+                if (ranks && !ranks->counts(a))
+                {
+                    continue; // each particle counts once, at its owner
+                }
                 for (int d = 0; d < D; ++d)
                 {
                     low[d] = std::min(low[d], state.x[a][d]);
@@ -106,9 +112,18 @@ public:
             }
             for (int d = 0; d < D; ++d)
             {
-                lower[b][d] = low[d] - reach;
-                upper[b][d] = high[d] + reach;
+                lower[b][d] = low[d];
+                upper[b][d] = high[d];
             }
+        }
+        if (ranks)
+        {
+            agreeOnBoxes(*ranks, lower, upper);
+        }
+        for (std::size_t b = 0; b < bodies; ++b)
+        {
+            lower[b].array() -= reach;
+            upper[b].array() += reach;
         }
         // 2. Pairs that can touch, and the particles in their overlap.
         std::vector<std::uint8_t> involved(p.size(), 0);
@@ -174,11 +189,19 @@ public:
         }
         const NeighbourList list = buildCrossNeighbourList<D>(queryX, sourceX, reach);
         // 4. R_a = κ Σ_b V_b W_ab / Σ_á V_á W_aá with V = V0 J at x^{n+1}, once per particle.
+        // Distributed: a ghost's J reads its neighbours in the reference configuration, which
+        // only its owner holds whole; the owner computes it (the boxes are the serial ones, so
+        // a ghost that is a source here is one at its owner too) and shares it.
         std::vector<double> currentVolume(p.size(), 0.0);
 #pragma omp parallel for schedule(static) if (useThreads(sources.size()))
         for (std::size_t i = 0; i < sources.size(); ++i)
         {
-            currentVolume[sources[i]] = p.V0[sources[i]] * state.jacobian(sources[i]);
+            const std::size_t a = sources[i];
+            currentVolume[a] = !ranks || ranks->counts(a) ? p.V0[a] * state.jacobian(a) : 0.0;
+        }
+        if (ranks)
+        {
+            ranks->shareWithGhosts(currentVolume);
         }
         const auto volume = [&](std::size_t a) { return currentVolume[a]; };
         const std::size_t nq = queries.size();
@@ -242,6 +265,27 @@ public:
     }
 
 private:
+    // The bodies' boxes over every rank's owned particles: those of the serial run, bit for bit
+    // (a minimum or maximum does not depend on the order), so every rank searches the same pairs.
+    static void agreeOnBoxes(const ParticleRanks& ranks, std::vector<Vec<D>>& lower,
+                             std::vector<Vec<D>>& upper)
+    {
+        std::vector<double> low;
+        std::vector<double> high;
+        for (std::size_t b = 0; b < lower.size(); ++b)
+        {
+            low.insert(low.end(), lower[b].data(), lower[b].data() + D);
+            high.insert(high.end(), upper[b].data(), upper[b].data() + D);
+        }
+        ranks.minimum(low);
+        ranks.maximum(high);
+        for (std::size_t b = 0; b < lower.size(); ++b)
+        {
+            std::copy_n(&low[b * D], D, lower[b].data());
+            std::copy_n(&high[b * D], D, upper[b].data());
+        }
+    }
+
     const Kernel& kernel_;
     double kappa_;
     std::vector<std::vector<std::uint8_t>> allowed_;

@@ -84,6 +84,8 @@ public:
 
     // The balance itself is the solver's energy audit (the one the run log prints); this
     // object tabulates it with the momenta and keeps the extremes.
+    bool distributable() const override { return true; } // ParticleRanks
+
     void execute(const StepState<D>& state) override
     {
         lastDeltaT_ = state.deltaT;
@@ -112,27 +114,32 @@ public:
             row.push_back(e.dissipated);
         }
         row.insert(row.end(), {e.total, e.drift});
+        // The momenta over the owned particles, then over the ranks (round-off: a sum).
         const ParticleSet<D>& p = state.particles;
+        const ParticleRanks& ranks = state.rankView();
         Vec<D> momentum = Vec<D>::Zero();
         Eigen::Vector3d angular = Eigen::Vector3d::Zero();
         for (std::size_t a = 0; a < p.size(); ++a)
         {
+            if (!ranks.counts(a))
+            {
+                continue;
+            }
             const Vec<D> m = p.m[a] * state.velocity[a];
             momentum += m;
             angular += embed<D>(p.x[a]).cross(embed<D>(m));
         }
-        for (int d = 0; d < D; ++d)
-        {
-            row.push_back(momentum[d]);
-        }
+        std::vector<double> momenta(momentum.data(), momentum.data() + D);
         if (D == 2)
         {
-            row.push_back(angular[2]);
+            momenta.push_back(angular[2]);
         }
         for (int d = 0; D == 3 && d < 3; ++d)
         {
-            row.push_back(angular[d]);
+            momenta.push_back(angular[d]);
         }
+        ranks.sum(momenta);
+        row.insert(row.end(), momenta.begin(), momenta.end());
         this->writeRow(state.time, state.deltaT, row);
     }
 

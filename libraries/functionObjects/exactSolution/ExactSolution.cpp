@@ -195,9 +195,17 @@ public:
             {"u_numeric", "u_exact", "u_error", "v_numeric", "v_exact", "u_periodMean"});
     }
 
+    bool distributable() const override { return true; } // ParticleRanks
+
     void execute(const StepState<D>& state) override
     {
-        const double u = state.particles.x[probe_][0] - state.particles.X[probe_][0];
+        // The probe's displacement and velocity, from the rank that owns it.
+        const std::vector<double> probe =
+            state.rankView().fromOwners({probe_}, 2, [&](std::size_t a, double* out) {
+                out[0] = state.particles.x[a][0] - state.particles.X[a][0];
+                out[1] = state.velocity[a][0];
+            });
+        const double u = probe[0];
         const double exact = solution_->displacement(xi_, state.time);
         const double error = u - exact;
         maxError_ = std::max(maxError_, std::abs(error));
@@ -207,7 +215,7 @@ public:
         if (this->rowDue(state.time, state.deltaT))
         {
             this->writeRow(state.time, state.deltaT,
-                           {u, exact, error, state.velocity[probe_][0],
+                           {u, exact, error, probe[1],
                             solution_->velocity(xi_, state.time), periods_.lastMean()});
         }
     }

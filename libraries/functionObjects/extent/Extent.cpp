@@ -69,33 +69,56 @@ public:
         this->setColumns(columns);
     }
 
+    bool distributable() const override { return true; } // ParticleRanks
+
     void execute(const StepState<D>& state) override
     {
         const ParticleSet<D>& p = state.particles;
-        std::vector<double> row;
+        const ParticleRanks& ranks = state.rankView();
+        // Per body, the largest of: u, -u, -x_d, x_d over the particles this rank owns, then
+        // over the ranks (a maximum: the serial values, bit for bit).
+        const std::size_t perBody = 2 + 2 * D;
+        std::vector<double> largest(bodies_.size() * perBody, std::numeric_limits<double>::lowest());
         for (std::size_t i = 0; i < bodies_.size(); ++i)
         {
             const BodyRange& range = p.bodies[bodies_[i]];
-            double largest = std::numeric_limits<double>::lowest();
-            double smallest = std::numeric_limits<double>::max();
-            Vec<D> low = Vec<D>::Constant(std::numeric_limits<double>::max());
-            Vec<D> high = Vec<D>::Constant(std::numeric_limits<double>::lowest());
+            double* body = &largest[i * perBody];
             for (std::size_t a = range.begin; a < range.end; ++a)
             {
+                if (!ranks.counts(a))
+                {
+                    continue;
+                }
                 const double u = p.x[a][component_] - p.X[a][component_];
-                largest = std::max(largest, u);
-                smallest = std::min(smallest, u);
-                low = low.cwiseMin(p.x[a]);
-                high = high.cwiseMax(p.x[a]);
+                body[0] = std::max(body[0], u);
+                body[1] = std::max(body[1], -u);
+                for (int d = 0; d < D; ++d)
+                {
+                    body[2 + 2 * d] = std::max(body[2 + 2 * d], -p.x[a][d]);
+                    body[3 + 2 * d] = std::max(body[3 + 2 * d], p.x[a][d]);
+                }
             }
-            if (largest > peaks_[i].first)
+        }
+        ranks.maximum(largest);
+        std::vector<double> row;
+        for (std::size_t i = 0; i < bodies_.size(); ++i)
+        {
+            const double* body = &largest[i * perBody];
+            if (body[0] > peaks_[i].first)
             {
-                peaks_[i] = {largest, state.time};
+                peaks_[i] = {body[0], state.time};
+            }
+            Vec<D> low;
+            Vec<D> high;
+            for (int d = 0; d < D; ++d)
+            {
+                low[d] = -body[2 + 2 * d];
+                high[d] = body[3 + 2 * d];
             }
             lastLow_[i] = embed<D>(low);
             lastHigh_[i] = embed<D>(high);
-            row.push_back(largest);
-            row.push_back(smallest);
+            row.push_back(body[0]);
+            row.push_back(-body[1]);
             for (int d = 0; d < D; ++d)
             {
                 row.push_back(low[d]);

@@ -61,13 +61,20 @@ public:
         this->setColumns({"displacement", "velocity"});
     }
 
+    bool distributable() const override { return true; } // ParticleRanks
+
     void execute(const StepState<D>& state) override
     {
-        const double u = state.particles.x[probe_][component_] - state.particles.X[probe_][component_];
-        periods_.add(state.time, u);
+        // The probe's displacement and velocity, from the rank that owns it.
+        const std::vector<double> probe =
+            state.rankView().fromOwners({probe_}, 2, [&](std::size_t a, double* out) {
+                out[0] = state.particles.x[a][component_] - state.particles.X[a][component_];
+                out[1] = state.velocity[a][component_];
+            });
+        periods_.add(state.time, probe[0]);
         if (this->rowDue(state.time, state.deltaT))
         {
-            this->writeRow(state.time, state.deltaT, {u, state.velocity[probe_][component_]});
+            this->writeRow(state.time, state.deltaT, probe);
         }
     }
 

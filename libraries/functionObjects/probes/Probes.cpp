@@ -82,16 +82,22 @@ public:
         this->setColumns(columns);
     }
 
+    bool distributable() const override { return true; } // ParticleRanks
+
     void execute(const StepState<D>& state) override
     {
         if (!this->rowDue(state.time, state.deltaT))
         {
             return;
         }
-        std::vector<double> row;
+        // Each probe's values come from the rank that owns its particle.
         const ParticleSet<D>& p = state.particles;
-        for (const std::size_t a : particles_)
+        std::size_t width = 0;
+        for (const auto& field : fields_)
         {
+            width += components(field).size();
+        }
+        const auto fill = [&](std::size_t a, double* out) {
             for (const auto& field : fields_)
             {
                 if (field == "position" || field == "displacement" || field == "velocity")
@@ -101,7 +107,7 @@ public:
                                                                    : state.velocity[a];
                     for (int d = 0; d < D; ++d)
                     {
-                        row.push_back(value[d]);
+                        *out++ = value[d];
                     }
                 }
                 else if (field == "F" || field == "P")
@@ -111,16 +117,17 @@ public:
                     {
                         for (int j = 0; j < D; ++j)
                         {
-                            row.push_back(value(i, j));
+                            *out++ = value(i, j);
                         }
                     }
                 }
                 else
                 {
-                    row.push_back(p.F[a].determinant());
+                    *out++ = p.F[a].determinant();
                 }
             }
-        }
+        };
+        const std::vector<double> row = state.rankView().fromOwners(particles_, width, fill);
         this->writeRow(state.time, state.deltaT, row);
     }
 

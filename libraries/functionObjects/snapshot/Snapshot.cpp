@@ -10,7 +10,9 @@
 #include "functionObjects/FunctionObjectModel.hpp"
 #include "io/AtomicFile.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <numeric>
 #include <sstream>
 
 namespace sph
@@ -75,6 +77,8 @@ public:
         (void)startTime;
     }
 
+    bool distributable() const override { return true; } // ParticleRanks
+
     void execute(const StepState<D>& state) override
     {
         if (!schedule_.due(state.time, state.deltaT))
@@ -132,64 +136,49 @@ public:
             }
         }
         out << "\n";
+        // Each rank's owned particles as rows (global index, then the values), joined on the
+        // writer in global order: the serial table, whatever the ranks.
         const ParticleSet<D>& p = state.particles;
-        char number[32];
-        const auto put = [&](double value) {
-            std::snprintf(number, sizeof number, " %.9g", value);
-            out << number;
-        };
+        const ParticleRanks& ranks = state.rankView();
+        std::vector<double> rows;
         for (std::size_t a = 0; a < p.size(); ++a)
         {
-            for (int d = 0; d < D; ++d)
+            if (!ranks.counts(a))
             {
-                put(p.x[a][d]);
+                continue;
             }
-            for (std::size_t f = 0; f < fields_.size(); ++f)
+            rows.push_back(static_cast<double>(ranks.global(a)));
+            appendValues(state, a, rows);
+        }
+        rows = ranks.onWriter(rows);
+        ++written_;
+        if (!ranks.writer)
+        {
+            return;
+        }
+        std::size_t width = 1 + D;
+        for (std::size_t f = 0; f < fields_.size(); ++f)
+        {
+            width += valueCount(f);
+        }
+        std::vector<std::size_t> order(rows.size() / width);
+        std::iota(order.begin(), order.end(), std::size_t{0});
+        std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+            return rows[i * width] < rows[j * width];
+        });
+        char number[32];
+        for (const std::size_t i : order)
+        {
+            for (std::size_t k = 1; k < width; ++k)
             {
-                const std::string& field = fields_[f];
-                if (registry_[f])
-                {
-                    double values[9];
-                    registry_[f]->array->get(a, values);
-                    for (int c = 0; c < registry_[f]->components(); ++c)
-                    {
-                        put(values[c]);
-                    }
-                }
-                else if (field == "J")
-                {
-                    put(p.F[a].determinant());
-                }
-                else if (field == "body")
-                {
-                    put(p.body[a]);
-                }
-                else if (field == "F" || field == "P")
-                {
-                    const Mat<D>& m = field == "F" ? p.F[a] : p.P[a];
-                    for (int i = 0; i < D; ++i)
-                    {
-                        for (int j = 0; j < D; ++j)
-                        {
-                            put(m(i, j));
-                        }
-                    }
-                }
-                else
-                {
-                    const Vec<D> v = field == "velocity" ? state.velocity[a] : Vec<D>(p.x[a] - p.X[a]);
-                    for (int d = 0; d < D; ++d)
-                    {
-                        put(v[d]);
-                    }
-                }
+                std::snprintf(number, sizeof number, " %.9g", rows[i * width + k]);
+                out << number;
             }
             out << "\n";
         }
         char time[32];
         std::snprintf(time, sizeof time, "%g", state.time);
         writeTextAtomically(folder_ / (this->name() + "_" + time + ".dat"), out.str());
-        ++written_;
     }
 
     std::vector<std::string> report() const override
@@ -210,6 +199,68 @@ public:
     }
 
 private:
+    // How many values entry f of fields_ gives per particle.
+    std::size_t valueCount(std::size_t f) const
+    {
+        const std::string& field = fields_[f];
+        if (registry_[f])
+        {
+            return static_cast<std::size_t>(registry_[f]->components());
+        }
+        if (field == "J" || field == "body")
+        {
+            return 1;
+        }
+        return field == "F" || field == "P" ? D * D : D;
+    }
+
+    // Particle a's row after its global index: x, then each field's values.
+    void appendValues(const StepState<D>& state, std::size_t a, std::vector<double>& row) const
+    {
+        const ParticleSet<D>& p = state.particles;
+        for (int d = 0; d < D; ++d)
+        {
+            row.push_back(p.x[a][d]);
+        }
+        for (std::size_t f = 0; f < fields_.size(); ++f)
+        {
+            const std::string& field = fields_[f];
+            if (registry_[f])
+            {
+                double values[9];
+                registry_[f]->array->get(a, values);
+                row.insert(row.end(), values, values + registry_[f]->components());
+            }
+            else if (field == "J")
+            {
+                row.push_back(p.F[a].determinant());
+            }
+            else if (field == "body")
+            {
+                row.push_back(p.body[a]);
+            }
+            else if (field == "F" || field == "P")
+            {
+                const Mat<D>& m = field == "F" ? p.F[a] : p.P[a];
+                for (int i = 0; i < D; ++i)
+                {
+                    for (int j = 0; j < D; ++j)
+                    {
+                        row.push_back(m(i, j));
+                    }
+                }
+            }
+            else
+            {
+                const Vec<D> v = field == "velocity" ? state.velocity[a] : Vec<D>(p.x[a] - p.X[a]);
+                for (int d = 0; d < D; ++d)
+                {
+                    row.push_back(v[d]);
+                }
+            }
+        }
+    }
+
     WriteSchedule schedule_;
     std::vector<std::string> fields_;
     // The registry field of each entry of fields_ (null for the built-in ones).

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <limits>
 
 namespace sph
@@ -45,6 +46,8 @@ public:
             {"zeroEnergyIndicator", "worstParticle", "minJ", "maxJ", "minDistanceRatio"});
     }
 
+    bool distributable() const override { return true; } // ParticleRanks
+
     void execute(const StepState<D>& state) override
     {
         if (!this->rowDue(state.time, state.deltaT))
@@ -55,13 +58,18 @@ public:
         const ReferenceConfiguration<D>& ref = state.reference;
         const NeighbourList& list = ref.neighbours;
         const double h = state.kernel.h();
+        const ParticleRanks& ranks = state.rankView();
         double indicator = 0.0;
-        std::size_t worst = 0;
+        double worst = std::numeric_limits<double>::infinity(); // global index; none yet
         double minJ = std::numeric_limits<double>::max();
         double maxJ = std::numeric_limits<double>::lowest();
         double minDistance2 = std::numeric_limits<double>::max();
         for (std::size_t a = 0; a < p.size(); ++a)
         {
+            if (!ranks.counts(a))
+            {
+                continue;
+            }
             const double J = p.F[a].determinant();
             minJ = std::min(minJ, J);
             maxJ = std::max(maxJ, J);
@@ -83,9 +91,21 @@ public:
             if (value > indicator)
             {
                 indicator = value;
-                worst = a;
+                worst = static_cast<double>(ranks.global(a));
             }
         }
+        // Over the ranks: the extremes, and the worst particle of least global index (as the
+        // serial loop finds it first).
+        std::vector<double> largest{indicator, maxJ, -minJ, -minDistance2};
+        ranks.maximum(largest);
+        std::vector<double> first{largest[0] == indicator ? worst
+                                                           : std::numeric_limits<double>::infinity()};
+        ranks.minimum(first);
+        indicator = largest[0];
+        maxJ = largest[1];
+        minJ = -largest[2];
+        minDistance2 = -largest[3];
+        worst = std::isfinite(first[0]) ? first[0] : 0.0;
         if (!haveFirst_)
         {
             first_ = indicator;
@@ -97,7 +117,7 @@ public:
         lowestJ_ = std::min(lowestJ_, minJ);
         highestJ_ = std::max(highestJ_, maxJ);
         this->writeRow(state.time, state.deltaT,
-                       {indicator, static_cast<double>(worst), minJ, maxJ,
+                       {indicator, worst, minJ, maxJ,
                         std::sqrt(minDistance2) / spacing_});
     }
 

@@ -93,6 +93,8 @@ public:
         this->setColumns(columns);
     }
 
+    bool distributable() const override { return true; } // ParticleRanks
+
     void execute(const StepState<D>& state) override
     {
         if (!this->rowDue(state.time, state.deltaT))
@@ -100,12 +102,17 @@ public:
             return;
         }
         const ParticleSet<D>& p = state.particles;
+        const ParticleRanks& ranks = state.rankView();
         double front = 0.0;
         std::vector<double> height;
         for (const std::size_t b : bodies_)
         {
             for (std::size_t a = p.bodies[b].begin; a < p.bodies[b].end; ++a)
             {
+                if (!ranks.counts(a))
+                {
+                    continue;
+                }
                 const double x = p.x[a][0];
                 front = std::max(front, x + half_);
                 if (x < 0.0 || !std::isfinite(x))
@@ -120,6 +127,15 @@ public:
                 height[column] = std::max(height[column], p.x[a][1] + half_);
             }
         }
+        // Over the ranks: the front and each column's height are maxima (the columns as many
+        // as the widest rank's, the missing ones 0, as a serial column nothing reached).
+        std::vector<double> columns{static_cast<double>(height.size())};
+        ranks.maximum(columns);
+        height.resize(static_cast<std::size_t>(columns[0]), 0.0);
+        height.push_back(front);
+        ranks.maximum(height);
+        front = height.back();
+        height.pop_back();
         const double top = height.empty() ? 0.0 : *std::max_element(height.begin(), height.end());
         std::vector<double> row{front, top, depositEnd(height)};
         std::ostringstream table;
@@ -156,7 +172,10 @@ public:
         last_ = row;
         char time[32];
         std::snprintf(time, sizeof time, "%g", state.time);
-        writeTextAtomically(this->folder() / (this->name() + "_" + time + ".dat"), table.str());
+        if (this->writer())
+        {
+            writeTextAtomically(this->folder() / (this->name() + "_" + time + ".dat"), table.str());
+        }
         this->writeRow(state.time, state.deltaT, row);
     }
 

@@ -71,7 +71,7 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
         // Z is SPD with at least M non-degenerate neighbours; judge it scale-free.
         const double scale = Z.trace() / M;
         const double det = (Z / scale).determinant();
-        if (!(scale > 0.0) || !(det > 1.0e-12) || !std::isfinite(det))
+        if ((!(scale > 0.0) || !(det > 1.0e-12) || !std::isfinite(det)) && ref.counts(a))
         {
             singular = std::max<long>(singular, static_cast<long>(n - a));
         }
