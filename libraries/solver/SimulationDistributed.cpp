@@ -37,17 +37,13 @@ void Simulation<D>::checkDistributable() const
         throw InputError(what + " does not run on several ranks yet",
                          {"A distributed run (sphSolid -parallel on more than one rank) supports "
                           "2D and 3D cases with any kernel, formulation and stabilisation, elastic "
-                          "materials, contact between bodies, gravity, fixed particles and function "
-                          "objects; run this case serially (or on "
+                          "materials, contact between bodies, rigid walls, gravity, fixed particles "
+                          "and function objects; run this case serially (or on "
                           "one rank) until the rest lands (docs/parallel.md)."});
     };
     if (D == 1)
     {
         refuse("a 1D case");
-    }
-    if (!walls_->empty())
-    {
-        refuse("a case with rigid walls (constant/walls)");
     }
     if (viscosity_->active())
     {
@@ -182,6 +178,7 @@ void Simulation<D>::shareRanks()
             values[i] = total;
         }
     };
+    walls_->setRanks(&ranks_);
     ranks_.ownersToGhosts = [this](std::vector<double>& values) {
         exchange_->updateGhostValues(values);
     };

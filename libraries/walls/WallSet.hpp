@@ -41,6 +41,7 @@
 #include "core/Suggest.hpp"
 #include "functionObjects/FunctionObject.hpp"
 #include "materials/Material.hpp"
+#include "particles/ParticleRanks.hpp"
 #include "particles/ParticleSet.hpp"
 #include "walls/Wall.hpp"
 
@@ -91,6 +92,11 @@ public:
     }
 
     bool empty() const { return walls_.empty(); }
+
+    // A distributed run (particles/ParticleRanks.hpp): each rank applies the walls to the
+    // particles it owns, and the loads, the potential and the work are summed over the ranks
+    // (they only report: the energy audit and wallForce).
+    void setRanks(const ParticleRanks* ranks) { ranks_ = ranks; }
     const std::vector<std::string>& names() const { return loads_.names; }
 
     // Run-header lines: each wall's summary.
@@ -142,6 +148,23 @@ public:
             loads_.force[w] = total;
             loads_.normalForce[w] = normalTotal;
         }
+        if (ranks_)
+        {
+            std::vector<double> sums;
+            for (std::size_t w = 0; w < walls_.size(); ++w)
+            {
+                sums.insert(sums.end(), loads_.force[w].data(), loads_.force[w].data() + D);
+                sums.push_back(loads_.normalForce[w]);
+            }
+            sums.push_back(potential_);
+            ranks_->sum(sums);
+            for (std::size_t w = 0; w < walls_.size(); ++w)
+            {
+                std::copy_n(&sums[w * (D + 1)], D, loads_.force[w].data());
+                loads_.normalForce[w] = sums[w * (D + 1) + D];
+            }
+            potential_ = sums.back();
+        }
     }
 
     // Φ^n = Σ φ_a of the last applyForces.
@@ -170,6 +193,10 @@ public:
             }
             work_[w] = work;
         }
+        if (ranks_)
+        {
+            ranks_->sum(work_);
+        }
         frictionPending_ = true;
         return work_;
     }
@@ -182,6 +209,10 @@ public:
         for (std::size_t w = 0; w < walls_.size(); ++w)
         {
             work_[w] = frictionPending_ ? 0.5 * frictionWork(w, x, xOld) : 0.0;
+        }
+        if (ranks_)
+        {
+            ranks_->sum(work_);
         }
         frictionPending_ = false;
         return work_;
@@ -210,7 +241,7 @@ private:
             }
             for (std::size_t i = p.bodies[b].begin; i < p.bodies[b].end; ++i)
             {
-                if (!p.fixed[i])
+                if (!p.fixed[i] && (!ranks_ || ranks_->counts(i)))
                 {
                     f(i);
                 }
@@ -264,6 +295,7 @@ private:
     }
 
     double radius_;                      // r0 = s/2
+    const ParticleRanks* ranks_ = nullptr; // a distributed run's (null: serial)
     std::vector<double> stiffness_;      // by body: M_b / s², so that k_a = stiffness V0_a
     std::vector<std::unique_ptr<Wall<D>>> walls_;
     WallLoads<D> loads_;

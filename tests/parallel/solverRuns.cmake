@@ -113,3 +113,16 @@ add_test(NAME "parallel:flagship Allrun -np 2 from a copy"
          COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/allrunParallel.sh ${CMAKE_SOURCE_DIR} ${CMAKE_BINARY_DIR})
 set_tests_properties("parallel:flagship Allrun -np 2 from a copy" PROPERTIES
     TIMEOUT 300 ENVIRONMENT "OMP_WAIT_POLICY=passive")
+
+# Rigid walls: the copper bar of tutorials/plasticity2D/impact made elastic (hencky) hits the
+# wall at 227 m/s; each rank applies the wall to its own particles and the wall's loads are summed
+# over the ranks (wallForce and the energy balance to round-off, every other table and output
+# bit for bit).
+foreach(ranks 2 3)
+    sph_add_solver_run("impact on a wall bit-identical on ${ranks} ranks" ${ranks}
+                       ${CMAKE_SOURCE_DIR}/tutorials/plasticity2D/impact bitIdentical -threads 1
+                       -set endTime=2e-5 -set writeInterval=1e-5
+                       -set "bodies.bar.material={type hencky\\; E 117e9\\; nu 0.35\\; rho 8930\\;}")
+    set_property(TEST "parallel:sphSolid impact on a wall bit-identical on ${ranks} ranks"
+                 APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy wall")
+endforeach()

@@ -53,6 +53,9 @@ public:
         this->setColumns(columns);
     }
 
+    // The loads are the walls' own, summed over the ranks (walls/WallSet.hpp).
+    bool distributable() const override { return true; }
+
     void execute(const StepState<D>& state) override
     {
         const WallLoads<D>& loads = *state.walls;
