@@ -13,6 +13,7 @@
 #include "core/Registry.hpp"
 #include "kernels/Kernel.hpp"
 #include "materials/Material.hpp"
+#include "particles/ParticleRanks.hpp"
 #include "particles/ParticleSet.hpp"
 
 #include <vector>
@@ -27,6 +28,10 @@ struct ViscosityState
     const std::vector<Vec<D>>& x;    // x^n
     const std::vector<Vec<D>>& v;    // the velocity the integrator holds (v^{n-1/2})
     const ParticleSet<D>& particles; // masses, bodies, fixed flags, F^n (ρ = ρ0 / det F)
+    // A distributed run (null: serial): the rank's ghosts reach one reach() in x^n, with the
+    // owners' x, v and F; a model computes the owned particles' accelerations and agrees with
+    // the other ranks on what bounds the time step.
+    const ParticleRanks* ranks = nullptr;
 };
 
 template <int D>
@@ -51,6 +56,11 @@ public:
     // The speed that bounds the time step, Δt = courant h / signalSpeed(c_max), given the
     // largest wave speed of the materials (after compute()).
     virtual double signalSpeed(double waveSpeed) const { return waveSpeed; }
+    // How far from a particle, in the current configuration, it reads other particles.
+    virtual double reach() const { return 0.0; }
+    // The local particles changed (a distributed run gathered new ghosts): forget anything
+    // kept per particle between calls.
+    virtual void particlesChanged() {}
 };
 
 } // namespace sph

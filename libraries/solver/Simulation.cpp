@@ -113,7 +113,9 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         commitHistory();
         drift(dt);
         refreshGhostPositions();
+        followMovingParticles();
         applyContact(dt);
+        refreshGhostVelocities();
         checkOrder(dt);
         time_ = step.landsOnTarget ? step.target : time_ + dt;
         ++step_;
@@ -301,7 +303,8 @@ void Simulation<D>::computeViscosity()
 {
     if (viscosity_->active())
     {
-        viscosity_->compute({particles_.x, particles_.v, particles_}, viscousAcceleration_);
+        viscosity_->compute({particles_.x, particles_.v, particles_, distributed() ? &ranks_ : nullptr},
+                            viscousAcceleration_);
     }
 }
 
@@ -390,10 +393,6 @@ void Simulation<D>::applyContact(double dt)
     if (!contact_->active())
     {
         return;
-    }
-    if (distributed() && contactRegatherDue())
-    {
-        regather();
     }
     ContactState<D> state{particles_.x, particles_.v, particles_, dt, [this](std::size_t a) {
                               return scheme_->deformationGradient(a, particles_.x,

@@ -142,9 +142,11 @@ private:
     void checkStatus(const ForceStatus& status, const std::string& when);
     double ghostWidth() const;         // how far from its owned particles a rank needs ghosts
     double ghostSkin() const;          // the part of it that lets particles move between gathers
-    double contactGhostWidth() const;  // the same for contact, in the current configuration
-    double contactSkin() const;
-    bool contactRegatherDue() const;   // a particle moved more than half the contact skin
+    double currentReach() const;       // how far models read other particles in x (0: none)
+    double currentSkin() const;        // the part of the ghosts in x that lets particles move
+    bool currentRegatherDue() const;   // a particle moved more than half that skin
+    void followMovingParticles();      // after the drift: regather when currentRegatherDue()
+    void refreshGhostVelocities();     // the owners' v (the viscosity reads them)
     bool movedFarther(const std::vector<Vec<D>>& now, const std::vector<Vec<D>>& then,
                       double distance) const; // some owned particle, on any rank
     long globalIndex(std::size_t a) const; // the particle's index in the whole set
@@ -217,7 +219,7 @@ private:
     long repartitions_ = 0;       // migrations after the start (maxLoadImbalance)
     long gathers_ = 0;            // ghost layers gathered (the start, then as particles move)
     std::vector<Vec<D>> gatheredAt_; // the local particles' x^r when the ghosts were gathered
-    std::vector<Vec<D>> gatheredX_;  // and their x (contact)
+    std::vector<Vec<D>> gatheredX_;  // and their x (contact, viscosity)
     std::string lastOutputFile_;  // in VTK/, the last output written (.vtu or .pvtu)
 };
 

@@ -37,17 +37,17 @@ void Simulation<D>::checkDistributable() const
         throw InputError(what + " does not run on several ranks yet",
                          {"A distributed run (sphSolid -parallel on more than one rank) supports "
                           "2D and 3D cases with any kernel, formulation and stabilisation, elastic "
-                          "materials, contact between bodies, rigid walls, gravity, fixed particles "
-                          "and function objects; run this case serially (or on "
+                          "materials, contact between bodies, rigid walls, artificial viscosity, "
+                          "gravity, fixed particles and function objects; run this case serially (or on "
                           "one rank) until the rest lands (docs/parallel.md)."});
     };
     if (D == 1)
     {
         refuse("a 1D case");
     }
-    if (viscosity_->active())
+    if (viscosity_->active() && integrator_->velocityField().empty())
     {
-        refuse("artificial viscosity (artificialViscosity in system/sphSchemes)");
+        refuse("artificial viscosity with a time integration that names no velocity field");
     }
     for (const auto& object : functionObjects_)
     {
@@ -79,18 +79,31 @@ double Simulation<D>::ghostSkin() const
     return 0.5 * scheme_->referenceNeeds(*kernel_).searchRadius;
 }
 
-// Contact reads, in the current configuration, a particle's neighbours within the model's reach
-// and what those computed from their own (contact/Contact.hpp): two reaches, plus a skin.
+// How far, in the current configuration, the models read other particles' state: contact two
+// of its reaches (a's kick reads its neighbours b, and the R_b each of those computed from its
+// own), the artificial viscosity one (v, x and F of its neighbours). 0: nothing reads x^n.
 template <int D>
-double Simulation<D>::contactGhostWidth() const
+double Simulation<D>::currentReach() const
 {
-    return 2.0 * contact_->reach() + contactSkin();
+    double reach = 0.0;
+    if (contact_->active())
+    {
+        reach = std::max(reach, 2.0 * contact_->reach());
+    }
+    if (viscosity_->active())
+    {
+        reach = std::max(reach, viscosity_->reach());
+    }
+    return reach;
 }
 
+// The ghosts in x reach currentReach() plus a skin of half a model's reach, so that particles
+// can move several steps before they are gathered again.
 template <int D>
-double Simulation<D>::contactSkin() const
+double Simulation<D>::currentSkin() const
 {
-    return 0.5 * contact_->reach();
+    return 0.5 * std::max(contact_->active() ? contact_->reach() : 0.0,
+                          viscosity_->active() ? viscosity_->reach() : 0.0);
 }
 
 // While no particle's x^r has moved more than half the skin since the ghosts were gathered,
@@ -103,12 +116,12 @@ bool Simulation<D>::regatherDue() const
     return movedFarther(reference_->reference().x, gatheredAt_, 0.5 * ghostSkin());
 }
 
-// The same for the contact ghosts, in the current configuration: checked after each drift
-// (particles move every step; the reference only at its moves).
+// The same for the ghosts in x (contact, viscosity): checked after each drift (particles move
+// every step; the reference only at its moves).
 template <int D>
-bool Simulation<D>::contactRegatherDue() const
+bool Simulation<D>::currentRegatherDue() const
 {
-    return movedFarther(particles_.x, gatheredX_, 0.5 * contactSkin());
+    return currentReach() > 0.0 && movedFarther(particles_.x, gatheredX_, 0.5 * currentSkin());
 }
 
 // Whether some owned particle, on any rank, is farther than `distance` from where it was.
@@ -221,9 +234,9 @@ void Simulation<D>::regather()
         ++repartitions_;
     }
     std::vector<typename ParticleExchange<D>::GhostReach> reaches{{&positions, ghostWidth()}};
-    if (contact_->active())
+    if (currentReach() > 0.0)
     {
-        reaches.push_back({&particles_.x, contactGhostWidth()});
+        reaches.push_back({&particles_.x, currentReach() + currentSkin()});
     }
     exchange_->addGhosts(fields_, reaches, globalId_);
     localParticlesChanged();
@@ -263,6 +276,7 @@ void Simulation<D>::localParticlesChanged()
         particles_.bodies[b].end = static_cast<std::size_t>(last - particles_.body.begin());
     }
     reference_->reference().candidates.clear(); // the last search's indices are stale
+    viscosity_->particlesChanged();
     const ForceStatus status = formulation_->updatesReference()
                                    ? reference_->restored(particles_)
                                    : reference_->initialise(particles_);
@@ -288,6 +302,28 @@ template <int D>
 void Simulation<D>::refreshGhostPositions()
 {
     refreshGhosts({positionField});
+}
+
+// After the drift: the ghosts in x are gathered again when particles have moved half their
+// skin (contact, viscosity).
+template <int D>
+void Simulation<D>::followMovingParticles()
+{
+    if (distributed() && currentRegatherDue())
+    {
+        regather();
+    }
+}
+
+// The viscosity reads its neighbours' v^{n-1/2}: the owners' (a ghost's own drifted with forces
+// cut at the edge of the layer, and missed its contact kick).
+template <int D>
+void Simulation<D>::refreshGhostVelocities()
+{
+    if (viscosity_->active())
+    {
+        refreshGhosts({integrator_->velocityField()});
+    }
 }
 
 // Serially: fails when the status does. Distributed: every rank learns whether any failed,

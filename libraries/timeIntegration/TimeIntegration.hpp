@@ -47,6 +47,9 @@ public:
     // The velocity array it advances (the particles' own) and its state in the registries.
     virtual void attach(std::vector<Vec<D>>& velocity, ParticleFields<D>& fields,
                         RunScalars& scalars) = 0;
+    // The name of the stored field attach() bound the velocity to ("" if none): a distributed
+    // run refreshes the ghosts' velocities through it when a model reads its neighbours'.
+    virtual std::string velocityField() const { return ""; }
     // Chooses Δt_n at level `step` (freshStart: the first level of a run that did not restart);
     // a collapse below 1e-6 of the first step, or a non-finite step, is a timeStepCollapse.
     virtual ForceStatus chooseTimeStep(long step, bool freshStart, const WaveSpeedBound& bound) = 0;

@@ -87,6 +87,8 @@ public:
     }
 
     bool active() const override { return true; }
+    double reach() const override { return kernel_.supportRadius(); }
+    void particlesChanged() override { neighbours_.clear(); }
 
     void compute(const ViscosityState<D>& state, std::vector<Vec<D>>& acceleration) override
     {
@@ -109,9 +111,9 @@ public:
 #pragma omp parallel for schedule(static) reduction(max : muMax) if (useThreads(n))
         for (std::size_t a = 0; a < n; ++a)
         {
-            if (p.fixed[a])
+            if (p.fixed[a] || (state.ranks && !state.ranks->counts(a)))
             {
-                continue;
+                continue; // a ghost: its owner computes it
             }
             Vec<D> sum = Vec<D>::Zero();
             for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k) // self first: skipped
@@ -132,6 +134,12 @@ public:
                 muMax = std::max(muMax, -mu);
             }
             acceleration[a] = -sum;
+        }
+        if (state.ranks)
+        {
+            std::vector<double> largest{muMax};
+            state.ranks->maximum(largest); // every rank bounds the step alike
+            muMax = largest[0];
         }
         muMax_ = muMax;
     }

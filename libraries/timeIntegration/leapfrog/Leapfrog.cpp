@@ -29,11 +29,13 @@ public:
     {
     }
 
+    std::string velocityField() const override { return "velocityHalfStep"; }
+
     void attach(std::vector<Vec<D>>& velocity, ParticleFields<D>& fields,
                 RunScalars& scalars) override
     {
         v_ = &velocity;
-        fields.bind(FieldSpec::vector("velocityHalfStep", "v^{n-1/2} of the leapfrog (v^0 "
+        fields.bind(FieldSpec::vector(velocityField(), "v^{n-1/2} of the leapfrog (v^0 "
                                                           "before the first step) [m/s]")
                         .restart(),
                     velocity);
