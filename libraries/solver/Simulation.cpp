@@ -204,8 +204,9 @@ void Simulation<D>::commitHistory()
     {
         withHistory.push_back(material->hasHistory() ? material.get() : nullptr);
     }
-    audit_.addDissipation(scheme_->commitHistory(
-        {particles_.F, particles_.V0, particles_.bodies, withHistory}));
+    const double dissipated = scheme_->commitHistory(
+        {particles_.F, particles_.V0, particles_.bodies, withHistory, distributed() ? &owned_ : nullptr});
+    audit_.addDissipation(distributed() ? comm_.sum(dissipated) : dissipated);
 }
 
 // x is the reference configuration bitwise (f = I exactly) when the reference was just moved

@@ -37,8 +37,9 @@ void Simulation<D>::checkDistributable() const
         throw InputError(what + " does not run on several ranks yet",
                          {"A distributed run (sphSolid -parallel on more than one rank) supports "
                           "2D and 3D cases with any kernel, formulation and stabilisation, elastic "
-                          "materials, contact between bodies, rigid walls, artificial viscosity, "
-                          "gravity, fixed particles and function objects; run this case serially (or on "
+                          "and plastic materials (but gradF's per-sample history), contact between "
+                          "bodies, rigid walls, artificial viscosity, gravity, fixed particles and "
+                          "function objects; run this case serially (or on "
                           "one rank) until the rest lands (docs/parallel.md)."});
     };
     if (D == 1)
@@ -56,9 +57,10 @@ void Simulation<D>::checkDistributable() const
             refuse("function object '" + object->name() + "' (" + object->summary() + ")");
         }
     }
-    if (historyMaterials_)
+    if (historyMaterials_ && scheme_->keepsPairHistory())
     {
-        refuse("a material with a plastic history");
+        refuse("gradF's per-sample plastic history (plasticSamples ownHistory, the default; "
+               "gradF with plasticSamples linearised runs distributed)");
     }
 }
 

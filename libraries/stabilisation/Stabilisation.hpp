@@ -63,6 +63,10 @@ struct HistoryCommit
     const std::vector<double>& V0;
     const std::vector<BodyRange>& bodies;
     const std::vector<Material<D>*>& materials;
+    // A distributed run's owned particles (null: all). Every local particle commits (a ghost's
+    // history must stay its owner's: its stress is read within the next force evaluation), but
+    // only owned particles count in the dissipated energy.
+    const std::vector<std::uint8_t>* owned = nullptr;
 };
 
 // Each particle's state committed at its own F, in chunks in parallel; returns the dissipated
@@ -79,19 +83,36 @@ double commitParticleHistory(const HistoryCommit<D>& in)
         {
             continue;
         }
+        // Chunks of at most `chunk` particles, none mixing owned particles and ghosts.
         const BodyRange& range = in.bodies[b];
-        const std::size_t chunks = (range.size() + chunk - 1) / chunk;
-        std::vector<double> dissipated(chunks, 0.0);
-#pragma omp parallel for schedule(static) if (useThreads(range.size()))
-        for (std::size_t i = 0; i < chunks; ++i)
+        std::vector<std::pair<std::size_t, std::size_t>> chunks;
+        for (std::size_t first = range.begin; first < range.end;)
         {
-            const std::size_t first = range.begin + i * chunk;
-            const std::size_t count = std::min(chunk, range.end - first);
-            dissipated[i] = material->commit(&in.F[first], &in.V0[first], first, count);
+            std::size_t last = std::min(range.end, first + chunk);
+            if (in.owned)
+            {
+                last = static_cast<std::size_t>(
+                    std::find_if(in.owned->begin() + static_cast<long>(first) + 1,
+                                 in.owned->begin() + static_cast<long>(last),
+                                 [&](std::uint8_t flag) { return flag != (*in.owned)[first]; }) -
+                    in.owned->begin());
+            }
+            chunks.emplace_back(first, last);
+            first = last;
         }
-        for (const double energy : dissipated)
+        std::vector<double> dissipated(chunks.size(), 0.0);
+#pragma omp parallel for schedule(static) if (useThreads(range.size()))
+        for (std::size_t i = 0; i < chunks.size(); ++i)
         {
-            total += energy;
+            const auto [first, last] = chunks[i];
+            dissipated[i] = material->commit(&in.F[first], &in.V0[first], first, last - first);
+        }
+        for (std::size_t i = 0; i < chunks.size(); ++i)
+        {
+            if (!in.owned || (*in.owned)[chunks[i].first])
+            {
+                total += dissipated[i];
+            }
         }
     }
     return total;
@@ -191,6 +212,9 @@ public:
     // ...and commits the history at the state of the last force evaluation, once per accepted
     // level, returning the dissipated energy. By default each particle at its own F.
     virtual double commitHistory(const HistoryCommit<D>& in) { return commitParticleHistory(in); }
+    // Whether it keeps a history of its own along the neighbour lists (gradF's per-sample
+    // states), which a distributed run cannot yet move with its particles.
+    virtual bool keepsPairHistory() const { return false; }
 };
 
 } // namespace sph

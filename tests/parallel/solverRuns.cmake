@@ -136,3 +136,24 @@ foreach(ranks 2 3)
     set_property(TEST "parallel:sphSolid impact with artificial viscosity bit-identical on ${ranks} ranks"
                  APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy wall")
 endforeach()
+
+# Plastic materials: the impact tutorial as it is (a j2Plasticity copper bar, TL none) on 2 and
+# 3 ranks; UL gradF with plasticSamples linearised on 2. Each particle's plastic history is a
+# registry field, so it travels with the particle; every rank commits its ghosts too (their
+# stress is read in the next force evaluation), and only owned particles count in the
+# dissipated energy. gradF's per-sample history (ownHistory) is refused, once.
+set(sphImpact ${CMAKE_SOURCE_DIR}/tutorials/plasticity2D/impact)
+foreach(ranks 2 3)
+    sph_add_solver_run("plastic impact bit-identical on ${ranks} ranks" ${ranks} ${sphImpact}
+                       bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5)
+    set_property(TEST "parallel:sphSolid plastic impact bit-identical on ${ranks} ranks"
+                 APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy wall")
+endforeach()
+sph_add_solver_run("plastic impact UL gradF linearised bit-identical on 2 ranks" 2 ${sphImpact}
+                   bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
+                   -set formulation.type=updatedLagrangian -set stabilisation.type=gradF
+                   -set stabilisation.plasticSamples=linearised)
+set_property(TEST "parallel:sphSolid plastic impact UL gradF linearised bit-identical on 2 ranks"
+             APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy wall")
+sph_add_solver_run("refuses gradF's per-sample plastic history on 2 ranks" 2 ${sphImpact} refused
+                   -set stabilisation.type=gradF)

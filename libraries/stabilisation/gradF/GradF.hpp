@@ -61,6 +61,7 @@ public:
         }
     }
     double commitHistory(const HistoryCommit<D>& in) override;
+    bool keepsPairHistory() const override { return !linearised_; }
 
     // Kinematics of particle a at positions x: f_a, F_a = f_a F^r_a and G_a (public for tests).
     struct Kinematics
