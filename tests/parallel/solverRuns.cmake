@@ -157,3 +157,13 @@ set_property(TEST "parallel:sphSolid plastic impact UL gradF linearised bit-iden
              APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy wall")
 sph_add_solver_run("refuses gradF's per-sample plastic history on 2 ranks" 2 ${sphImpact} refused
                    -set stabilisation.type=gradF)
+# A geomaterial: the column collapse tutorial (druckerPrager sand under gravity between walls,
+# every function object of the tutorial: surface profiles, snapshots of plasticStrain) with
+# gradF's linearised samples, on 2 ranks.
+sph_add_solver_run("geomaterial column collapse bit-identical on 2 ranks" 2
+                   ${CMAKE_SOURCE_DIR}/tutorials/geomaterials/columnCollapse bitIdentical -threads 1
+                   -set endTime=0.02 -set writeInterval=0.01
+                   -set stabilisation.plasticSamples=linearised
+                   -set functions.surface.writeInterval=0.01 -set functions.particles.writeInterval=0.01)
+set_property(TEST "parallel:sphSolid geomaterial column collapse bit-identical on 2 ranks"
+             APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy walls")
