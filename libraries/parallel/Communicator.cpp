@@ -140,6 +140,59 @@ std::vector<double> Communicator::gather(const std::vector<double>& values) cons
 }
 
 std::vector<std::vector<double>>
+Communicator::exchangeKnown(const std::vector<std::vector<double>>& toEach,
+                            const std::vector<std::size_t>& fromEachCount) const
+{
+    const auto ranks = static_cast<std::size_t>(size_);
+    if (toEach.size() != ranks || fromEachCount.size() != ranks)
+    {
+        throw std::logic_error("Communicator::exchangeKnown: one buffer and count per rank expected");
+    }
+    if (!parallel())
+    {
+        return toEach;
+    }
+    // Point to point with the ranks that send or receive anything: no collective, so the cost
+    // grows with the neighbours, not with the ranks.
+    std::vector<std::vector<double>> fromEach(ranks);
+    std::vector<MPI_Request> requests;
+    for (std::size_t r = 0; r < ranks; ++r)
+    {
+        if (fromEachCount[r] > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
+            toEach[r].size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        {
+            throw std::length_error("Communicator::exchangeKnown: over 2^31 values for one rank");
+        }
+        if (r == static_cast<std::size_t>(rank_))
+        {
+            fromEach[r] = toEach[r];
+            continue;
+        }
+        if (fromEachCount[r] > 0)
+        {
+            fromEach[r].resize(fromEachCount[r]);
+            requests.emplace_back();
+            check(MPI_Irecv(fromEach[r].data(), static_cast<int>(fromEachCount[r]), MPI_DOUBLE,
+                            static_cast<int>(r), 0, MPI_COMM_WORLD, &requests.back()),
+                  "MPI_Irecv");
+        }
+    }
+    for (std::size_t r = 0; r < ranks; ++r)
+    {
+        if (r != static_cast<std::size_t>(rank_) && !toEach[r].empty())
+        {
+            requests.emplace_back();
+            check(MPI_Isend(toEach[r].data(), static_cast<int>(toEach[r].size()), MPI_DOUBLE,
+                            static_cast<int>(r), 0, MPI_COMM_WORLD, &requests.back()),
+                  "MPI_Isend");
+        }
+    }
+    check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
+          "MPI_Waitall");
+    return fromEach;
+}
+
+std::vector<std::vector<double>>
 Communicator::exchange(const std::vector<std::vector<double>>& toEach) const
 {
     if (toEach.size() != static_cast<std::size_t>(size_))

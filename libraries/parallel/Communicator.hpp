@@ -54,6 +54,10 @@ public:
     // Personalised all-to-all: toEach[r] goes to rank r; the result's [r] came from rank r
     // (the particles that migrate, the ghost values; MPI_Alltoallv). toEach has size() entries.
     std::vector<std::vector<double>> exchange(const std::vector<std::vector<double>>& toEach) const;
+    // The same when each rank already knows how many values it receives from each (a fixed
+    // pattern, e.g. refreshing ghosts): point to point with those ranks only, no collective.
+    std::vector<std::vector<double>> exchangeKnown(const std::vector<std::vector<double>>& toEach,
+                                                   const std::vector<std::size_t>& fromEachCount) const;
     // Rank `root`'s text on every rank (e.g. the one diagnosis of a failure).
     std::string broadcast(const std::string& text, int root) const;
     void barrier() const;

@@ -292,8 +292,8 @@ void ParticleExchange<D>::updateGhosts(ParticleFields<D>& fields,
         }
     }
     countSent(toEach);
-    const std::vector<Rows> received = comm_.exchange(toEach);
     const std::size_t perParticle = std::accumulate(components.begin(), components.end(), std::size_t{0});
+    const std::vector<Rows> received = comm_.exchangeKnown(toEach, receiveCounts(perParticle));
     for (std::size_t r = 0; r < receiveAt_.size(); ++r)
     {
         if (received[r].size() != receiveAt_[r].size() * perParticle)
@@ -312,6 +312,19 @@ void ParticleExchange<D>::updateGhosts(ParticleFields<D>& fields,
     }
 }
 
+// How many values each rank sends this one in a refresh of its ghosts, `perGhost` each: the
+// ghost pattern is fixed between gatherings, so no counts need exchanging.
+template <int D>
+std::vector<std::size_t> ParticleExchange<D>::receiveCounts(std::size_t perGhost) const
+{
+    std::vector<std::size_t> counts(static_cast<std::size_t>(comm_.size()), 0);
+    for (std::size_t r = 0; r < receiveAt_.size(); ++r)
+    {
+        counts[r] = receiveAt_[r].size() * perGhost;
+    }
+    return counts;
+}
+
 template <int D>
 void ParticleExchange<D>::updateGhostValues(std::vector<double>& values)
 {
@@ -328,7 +341,7 @@ void ParticleExchange<D>::updateGhostValues(std::vector<double>& values)
         }
     }
     countSent(toEach);
-    const std::vector<Rows> received = comm_.exchange(toEach);
+    const std::vector<Rows> received = comm_.exchangeKnown(toEach, receiveCounts(1));
     for (std::size_t r = 0; r < receiveAt_.size(); ++r)
     {
         if (received[r].size() != receiveAt_[r].size())

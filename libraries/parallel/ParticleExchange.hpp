@@ -105,6 +105,7 @@ private:
     // each new local particle's row index.
     void replaceBy(ParticleFields<D>& fields, const Rows& rows, std::vector<std::size_t>& origin);
     void countSent(const std::vector<Rows>& toEach);
+    std::vector<std::size_t> receiveCounts(std::size_t perGhost) const;
 
     Communicator comm_;
     std::vector<std::uint8_t> owned_;                  // per local particle (empty: all owned)

@@ -53,6 +53,35 @@ TEST_CASE("communicator: one rank's text reaches every rank", "[parallel]")
     CHECK(comm.broadcast("", 0).empty());
 }
 
+TEST_CASE("communicator: values reach the ranks that expect them, point to point", "[parallel]")
+{
+    // A ring: each rank sends r + 1 values to the next and receives from the previous, whose
+    // count it knows; and keeps one value for itself.
+    const Communicator comm = Communicator::world();
+    const auto n = static_cast<std::size_t>(comm.size());
+    const auto me = static_cast<std::size_t>(comm.rank());
+    const std::size_t next = (me + 1) % n;
+    const std::size_t previous = (me + n - 1) % n;
+    std::vector<std::vector<double>> toEach(n);
+    std::vector<std::size_t> fromEachCount(n, 0);
+    if (n > 1)
+    {
+        toEach[next].assign(me + 1, 0.5 + static_cast<double>(me));
+        fromEachCount[previous] = previous + 1;
+    }
+    toEach[me].push_back(-1.0);
+    fromEachCount[me] = 1;
+    const auto fromEach = comm.exchangeKnown(toEach, fromEachCount);
+    REQUIRE(fromEach.size() == n);
+    CHECK(fromEach[me] == std::vector<double>{-1.0});
+    if (n > 1)
+    {
+        CHECK(fromEach[previous] ==
+              std::vector<double>(previous + 1, 0.5 + static_cast<double>(previous)));
+    }
+    CHECK_THROWS_AS(comm.exchangeKnown(toEach, {}), std::logic_error);
+}
+
 TEST_CASE("RCB: every rank gets an equal share, in boxes that do not overlap", "[parallel]")
 {
     const Communicator comm = Communicator::world();
