@@ -4,7 +4,6 @@
 
 #include <cstdlib>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
 namespace sph
@@ -261,9 +260,30 @@ double Communicator::sum(double value) const
     {
         return value;
     }
-    // MPI_Allreduce may sum in any order (and differently on different ranks): gather instead.
-    const std::vector<double> values = gather(value);
-    return std::accumulate(values.begin(), values.end(), 0.0);
+    std::vector<double> values{value};
+    sum(values);
+    return values[0];
+}
+
+void Communicator::sum(std::vector<double>& values) const
+{
+    if (!parallel())
+    {
+        return;
+    }
+    // MPI_Allreduce may sum in any order (and differently on different ranks): gather instead,
+    // and add in rank order.
+    const std::vector<double> all = gather(values);
+    const std::size_t n = values.size();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        double total = 0.0;
+        for (std::size_t r = 0; r < static_cast<std::size_t>(size_); ++r)
+        {
+            total += all[r * n + i];
+        }
+        values[i] = total;
+    }
 }
 
 std::string Communicator::broadcast(const std::string& text, int root) const

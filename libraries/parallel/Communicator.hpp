@@ -47,6 +47,7 @@ public:
     long long sum(long long value) const;
     // Summed in rank order on every rank: the same bits everywhere.
     double sum(double value) const;
+    void sum(std::vector<double>& values) const; // element by element, in place
     // Every rank's value, in rank order, on every rank.
     std::vector<double> gather(double value) const;
     // Every rank's values, rank after rank, on every rank (each rank gives the same count).

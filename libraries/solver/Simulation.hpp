@@ -126,7 +126,8 @@ private:
     long crossingParticle() const;
     std::string particleName(std::size_t a) const;
 
-    // SimulationDistributed.cpp: a run on several ranks (sphSolid -parallel; docs/parallel.md)
+    // SimulationDistributed.cpp and SimulationGhosts.cpp (the ghost layer): a run on several
+    // ranks (sphSolid -parallel; docs/parallel.md)
     bool distributed() const { return exchange_ != nullptr; }
     void checkDistributable() const;   // the models a distributed run supports, else InputError
     void distribute();                 // every rank's whole set -> owned particles + ghosts
