@@ -163,16 +163,22 @@ private:
     std::vector<std::uint32_t> sorted_;
 };
 
+// The per-thread buffers of a search pass (one per thread, owned by the calling thread). Kept
+// between calls for the searches that run every step (contact's cross lists): allocating and
+// page-faulting megabytes each step would cost more than the search. A search that runs rarely
+// releases them afterwards (releaseSearchBuffers): in 3D they are as large as the list itself.
+thread_local std::vector<std::vector<std::uint32_t>> searchBuffers;
+
+void releaseSearchBuffers() { std::vector<std::vector<std::uint32_t>>().swap(searchBuffers); }
+
 // Fills the CSR list in one search pass: each thread searches a contiguous block of particles
 // into its own buffer, then the buffers are copied in block order, so the result is the same
-// for any thread count. The buffers live on between calls: a reference configuration that
-// moves every step would otherwise allocate (and page-fault) megabytes each step.
+// for any thread count.
 template <int D, class Candidates>
 void fillLists(std::size_t n, Candidates&& candidates, NeighbourList& list)
 {
     list.offsets.assign(n + 1, 0);
-    static thread_local std::vector<std::vector<std::uint32_t>> pool;
-    std::vector<std::vector<std::uint32_t>>& blocks = pool;
+    std::vector<std::vector<std::uint32_t>>& blocks = searchBuffers;
 #pragma omp parallel if (useThreads(n))
     {
 #pragma omp single
@@ -226,7 +232,7 @@ NeighbourList buildNeighbourList(const std::vector<Vec<D>>& x, const std::vector
 {
     const CellGrid<D> grid(x, radius);
     const double radius2 = radius * radius;
-    return fillLists<D>(x.size(), [&](std::size_t a, std::vector<std::uint32_t>& found) {
+    NeighbourList list = fillLists<D>(x.size(), [&](std::size_t a, std::vector<std::uint32_t>& found) {
         const std::size_t first = found.size() + 1;
         found.push_back(static_cast<std::uint32_t>(a));
         grid.forEachNear(x[a], [&](std::uint32_t b) {
@@ -237,6 +243,10 @@ NeighbourList buildNeighbourList(const std::vector<Vec<D>>& x, const std::vector
         });
         std::sort(found.begin() + static_cast<long>(first), found.end());
     });
+    // Built once (a fixed reference) or rarely (a moving one's candidates): not worth keeping
+    // a second copy of the list for.
+    releaseSearchBuffers();
+    return list;
 }
 
 template <int D>
@@ -252,19 +262,61 @@ template <int D>
 void filterNeighbourList(const NeighbourList& candidates, const std::vector<Vec<D>>& x,
                          double radius, NeighbourList& into)
 {
+    // A particle keeps a subset of its candidates, so each thread writes its block's pairs into
+    // `into` from where the block's candidates start, never reaching the next block; the blocks
+    // are then moved down in order to close the gaps. No buffer besides the list itself: a
+    // moving reference filters every step, and in 3D a copy of the list costs 0.3-0.5 kB per
+    // particle. The result is the same for any thread count.
     const double radius2 = radius * radius;
-    fillLists<D>(x.size(), [&](std::size_t a, std::vector<std::uint32_t>& found) {
-        const std::size_t first = candidates.begin(a);
-        found.push_back(candidates.indices[first]); // the particle itself
-        for (std::size_t k = first + 1; k < candidates.end(a); ++k)
+    const std::size_t n = x.size();
+    into.offsets.assign(n + 1, 0);
+    into.indices.resize(candidates.pairCount());
+    std::vector<std::size_t> blockFirst(1, 0);
+#pragma omp parallel if (useThreads(n))
+    {
+        const std::size_t threads = static_cast<std::size_t>(omp_get_num_threads());
+        const std::size_t thread = static_cast<std::size_t>(omp_get_thread_num());
+#pragma omp single
         {
-            const std::uint32_t b = candidates.indices[k];
-            if ((x[b] - x[a]).squaredNorm() < radius2)
+            blockFirst.resize(threads + 1);
+            for (std::size_t t = 0; t <= threads; ++t)
             {
-                found.push_back(b);
+                blockFirst[t] = n * t / threads;
             }
         }
-    }, into);
+        std::size_t cursor = blockFirst[thread] < n ? candidates.begin(blockFirst[thread]) : 0;
+        for (std::size_t a = blockFirst[thread]; a < blockFirst[thread + 1]; ++a)
+        {
+            const std::size_t first = candidates.begin(a);
+            const std::size_t start = cursor;
+            into.indices[cursor++] = candidates.indices[first]; // the particle itself
+            for (std::size_t k = first + 1; k < candidates.end(a); ++k)
+            {
+                const std::uint32_t b = candidates.indices[k];
+                if ((x[b] - x[a]).squaredNorm() < radius2)
+                {
+                    into.indices[cursor++] = b;
+                }
+            }
+            into.offsets[a + 1] = static_cast<std::uint32_t>(cursor - start);
+        }
+    }
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        into.offsets[a + 1] += into.offsets[a];
+    }
+    for (std::size_t t = 0; t + 1 < blockFirst.size(); ++t)
+    {
+        const std::size_t first = blockFirst[t];
+        const std::size_t last = blockFirst[t + 1];
+        if (first < last && into.offsets[first] != candidates.begin(first))
+        {
+            std::copy(into.indices.begin() + candidates.begin(first),
+                      into.indices.begin() + candidates.begin(first) + (into.offsets[last] - into.offsets[first]),
+                      into.indices.begin() + into.offsets[first]);
+        }
+    }
+    into.indices.resize(into.offsets[n]);
 }
 
 template <int D>

@@ -27,6 +27,7 @@ public:
         if (!(candidateRadius_ == radius + skin && searchedAt_.size() == x.size() &&
               !movedMoreThan(x, 0.5 * skin)))
         {
+            candidates_ = NeighbourList(); // the old ones are not needed by the search
             candidates_ = buildNeighbourList<D>(x, body, radius + skin);
             searchedAt_ = x;
             candidateRadius_ = radius + skin;

@@ -47,6 +47,7 @@ int runDimension(const CaseDictionaries& dicts, const ControlSettings& control,
         initial = readParticleFile(particleFile); // reports the missing file
     }
     Simulation<D> simulation(dicts, control, schemes, initial);
+    initial = InitialParticles(); // copied into the simulation: not kept for the whole run
     RunLog log(std::cout);
     log.header(simulation.describe());
     if (dryRun)

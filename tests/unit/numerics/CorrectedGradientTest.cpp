@@ -1,6 +1,9 @@
 // Bonet-Lok corrected gradient (spec §2): reproducing conditions to round-off and exact F for
 // affine maps on perturbed clouds in 1D/2D/3D, boundary particles included.
 #include "numerics/NumericsSupport.hpp"
+#include "particles/Parallel.hpp"
+
+#include <omp.h>
 
 using namespace sph;
 
@@ -140,4 +143,33 @@ TEST_CASE("filtered candidate lists equal a fresh search", "[neighbours]")
     const NeighbourList filtered = filterNeighbourList<2>(candidates, points, 2.0);
     CHECK(filtered.offsets == fresh.offsets);
     CHECK(filtered.indices == fresh.indices);
+}
+
+TEST_CASE("filtering in place gives a fresh search's lists for any thread count, into a reused list",
+          "[neighbours]")
+{
+    // Enough points for the threads to split them (particles/Parallel.hpp), and a skin that
+    // drops many candidates, so each block's pairs move down when the gaps are closed.
+    auto points = test::lattice<2>(60, 0.3, 8);
+    REQUIRE(points.size() > 3 * minimumParticlesForThreads);
+    const std::vector<int> body(points.size(), 0);
+    const NeighbourList candidates = buildNeighbourList<2>(points, body, 3.0);
+    for (auto& p : points)
+    {
+        p += Vec<2>(0.04 * std::sin(7 * p[1]), 0.04 * std::cos(5 * p[0]));
+    }
+    const NeighbourList fresh = buildNeighbourList<2>(points, body, 2.0);
+    REQUIRE(fresh.pairCount() < candidates.pairCount() * 3 / 4);
+    const int threadsBefore = omp_get_max_threads();
+    NeighbourList into = filterNeighbourList<2>(candidates, points, 2.5); // a longer list first
+    for (const int threads : {1, 2, 3, 4})
+    {
+        omp_set_num_threads(threads);
+        std::fill(into.indices.begin(), into.indices.end(), 0u); // no earlier result to find
+        filterNeighbourList<2>(candidates, points, 2.0, into);
+        INFO(threads << " threads");
+        CHECK(into.offsets == fresh.offsets);
+        CHECK(into.indices == fresh.indices);
+    }
+    omp_set_num_threads(threadsBefore);
 }
