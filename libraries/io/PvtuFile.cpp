@@ -24,7 +24,7 @@ std::string typeOf(const VtuArray& array)
     {
         return "Int32";
     }
-    return array.singles.empty() ? "Float64" : "Float32";
+    return array.single ? "Float32" : "Float64";
 }
 
 void declare(pt::ptree& parent, const std::string& name, const std::string& type, int components)
@@ -168,45 +168,6 @@ VtuData readPvtu(const std::filesystem::path& file, const std::string& orderBy)
                 static_cast<std::size_t>(array.components));
     }
     return ordered;
-}
-
-VtuData keepPoints(const VtuData& data, const std::vector<std::uint8_t>& keep)
-{
-    VtuData kept;
-    kept.fieldData = data.fieldData;
-    kept.stringFields = data.stringFields;
-    kept.activeScalars = data.activeScalars;
-    kept.activeVectors = data.activeVectors;
-    kept.activeTensors = data.activeTensors;
-    const std::size_t n = data.pointCount();
-    const auto copyRows = [&](const auto& from, auto& to, std::size_t width) {
-        for (std::size_t p = 0; p < n; ++p)
-        {
-            if (keep[p])
-            {
-                to.insert(to.end(), from.begin() + static_cast<long>(p * width),
-                          from.begin() + static_cast<long>((p + 1) * width));
-            }
-        }
-    };
-    copyRows(data.points, kept.points, 3);
-    for (const auto& [name, array] : data.pointData)
-    {
-        VtuArray& out = kept.pointData[name];
-        out.components = array.components;
-        out.integer = array.integer;
-        out.componentNames = array.componentNames;
-        const auto width = static_cast<std::size_t>(array.components);
-        if (array.singles.empty())
-        {
-            copyRows(array.values, out.values, width);
-        }
-        else
-        {
-            copyRows(array.singles, out.singles, width);
-        }
-    }
-    return kept;
 }
 
 } // namespace sph

@@ -27,7 +27,4 @@ void writePvtu(const std::filesystem::path& file, const VtuData& layout,
 // field data of the first piece. Errors are InputErrors naming the file.
 VtuData readPvtu(const std::filesystem::path& file, const std::string& orderBy);
 
-// The points with keep[p] != 0 of `data`, with their point arrays (field data unchanged).
-VtuData keepPoints(const VtuData& data, const std::vector<std::uint8_t>& keep);
-
 } // namespace sph

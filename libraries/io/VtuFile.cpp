@@ -15,15 +15,21 @@
 #include <vtkFloatArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
+#include <vtkObjectFactory.h>
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkUnstructuredGridAlgorithm.h>
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -88,7 +94,7 @@ vtkSmartPointer<vtkDataArray> makeArray(const std::string& name, const VtuArray&
                                         std::size_t tuples)
 {
     vtkSmartPointer<vtkDataArray> result;
-    if (!array.singles.empty())
+    if (array.single)
     {
         result = wrap<vtkFloatArray>(array.singles, array.components);
     }
@@ -145,14 +151,18 @@ VtuArray readArray(vtkDataArray* source)
 
 } // namespace
 
-void writeVtu(const std::filesystem::path& file, const VtuData& data)
+namespace
 {
-    const std::size_t n = data.pointCount();
+
+// The grid of one piece: its points (one vertex cell each) and point arrays, wrapped, not
+// copied (`piece` must outlive the write); the field data and active arrays of `header`.
+vtkSmartPointer<vtkUnstructuredGrid> makeGrid(const VtuData& piece, const VtuData& header)
+{
+    const std::size_t n = piece.pointCount();
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetData(wrap<vtkDoubleArray>(data.points, 3));
+    points->SetData(wrap<vtkDoubleArray>(piece.points, 3));
     grid->SetPoints(points);
-    // One vertex cell per point.
     auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
     auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
     offsets->SetNumberOfValues(static_cast<vtkIdType>(n + 1));
@@ -169,33 +179,33 @@ void writeVtu(const std::filesystem::path& file, const VtuData& data)
     cells->SetData(offsets, connectivity);
     grid->SetCells(VTK_VERTEX, cells);
 
-    for (const auto& [name, array] : data.pointData)
+    for (const auto& [name, array] : piece.pointData)
     {
-        const std::size_t size = array.singles.empty() ? array.values.size() : array.singles.size();
+        const std::size_t size = array.single ? array.singles.size() : array.values.size();
         if (size != n * static_cast<std::size_t>(array.components))
         {
             throw std::logic_error("point array '" + name + "' has the wrong size");
         }
         grid->GetPointData()->AddArray(makeArray(name, array, n));
     }
-    if (!data.activeScalars.empty())
+    if (!header.activeScalars.empty())
     {
-        grid->GetPointData()->SetActiveScalars(data.activeScalars.c_str());
+        grid->GetPointData()->SetActiveScalars(header.activeScalars.c_str());
     }
-    if (!data.activeVectors.empty())
+    if (!header.activeVectors.empty())
     {
-        grid->GetPointData()->SetActiveVectors(data.activeVectors.c_str());
+        grid->GetPointData()->SetActiveVectors(header.activeVectors.c_str());
     }
-    if (!data.activeTensors.empty())
+    if (!header.activeTensors.empty())
     {
-        grid->GetPointData()->SetActiveTensors(data.activeTensors.c_str());
+        grid->GetPointData()->SetActiveTensors(header.activeTensors.c_str());
     }
-    for (const auto& [name, array] : data.fieldData)
+    for (const auto& [name, array] : header.fieldData)
     {
         grid->GetFieldData()->AddArray(
             makeArray(name, array, array.values.size() / static_cast<std::size_t>(array.components)));
     }
-    for (const auto& [name, strings] : data.stringFields)
+    for (const auto& [name, strings] : header.stringFields)
     {
         auto array = vtkSmartPointer<vtkStringArray>::New();
         array->SetName(name.c_str());
@@ -205,14 +215,81 @@ void writeVtu(const std::filesystem::path& file, const VtuData& data)
         }
         grid->GetFieldData()->AddArray(array);
     }
+    return grid;
+}
 
+// A pipeline source that makes the piece VTK's writer asks for, when it asks: the writer
+// streams the pieces of one file through it (vtkXMLUnstructuredDataWriter::SetNumberOfPieces).
+class PieceSource : public vtkUnstructuredGridAlgorithm
+{
+public:
+    static PieceSource* New();
+    vtkTypeMacro(PieceSource, vtkUnstructuredGridAlgorithm);
+
+    void setUp(const VtuData* header, std::size_t points, std::size_t pieceSize,
+               const VtuPieceFill* fill)
+    {
+        header_ = header;
+        points_ = points;
+        pieceSize_ = pieceSize;
+        fill_ = fill;
+    }
+    int pieceCount() const
+    {
+        return static_cast<int>(std::max<std::size_t>(1, (points_ + pieceSize_ - 1) / pieceSize_));
+    }
+
+protected:
+    PieceSource() { SetNumberOfInputPorts(0); }
+
+    int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+    {
+        out->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
+        return 1;
+    }
+
+    int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+    {
+        vtkInformation* info = out->GetInformationObject(0);
+        const auto piece = static_cast<std::size_t>(
+            info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
+        const auto pieces = static_cast<std::size_t>(
+            info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+        if (pieces != static_cast<std::size_t>(pieceCount()))
+        {
+            vtkErrorMacro("asked for piece " << piece << " of " << pieces << ", made as "
+                                             << pieceCount());
+            return 0;
+        }
+        const std::size_t begin = std::min(points_, piece * pieceSize_);
+        const std::size_t end = std::min(points_, begin + pieceSize_);
+        current_ = VtuData(); // the last piece's arrays go before this one's are made
+        (*fill_)(begin, end, current_);
+        vtkUnstructuredGrid::GetData(info)->ShallowCopy(makeGrid(current_, *header_));
+        return 1;
+    }
+
+private:
+    const VtuData* header_ = nullptr;
+    std::size_t points_ = 0;
+    std::size_t pieceSize_ = 1;
+    const VtuPieceFill* fill_ = nullptr;
+    VtuData current_; // the piece being written (its arrays are wrapped, not copied)
+};
+
+vtkStandardNewMacro(PieceSource);
+
+// Writes the grid `connect` gives (its input data or pipeline connection) atomically.
+void writeGrid(const std::filesystem::path& file,
+               const std::function<void(vtkXMLUnstructuredGridWriter&)>& connect)
+{
     writeAtomically(file, [&](const std::filesystem::path& temporary) {
         auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
         ErrorCollector errors(writer);
         // A failed write is also reported by the pipeline's executive, printed unless caught.
         ErrorCollector pipelineErrors(writer->GetExecutive());
         writer->SetFileName(temporary.c_str());
-        writer->SetInputData(grid);
+        connect(*writer);
         writer->SetDataModeToAppended();
         writer->EncodeAppendedDataOff();
         writer->SetCompressorTypeToZLib();
@@ -224,8 +301,32 @@ void writeVtu(const std::filesystem::path& file, const VtuData& data)
         if (written != 1 || writer->GetErrorCode() != vtkErrorCode::NoError ||
             !errors.messages().empty())
         {
-            throw IoError(file, writeFailure(writer->GetErrorCode(), error, errors.messages()));
+            const std::string messages = errors.messages() + pipelineErrors.messages();
+            throw IoError(file, writeFailure(writer->GetErrorCode(), error, messages));
         }
+    });
+}
+
+} // namespace
+
+void writeVtu(const std::filesystem::path& file, const VtuData& data)
+{
+    const vtkSmartPointer<vtkUnstructuredGrid> grid = makeGrid(data, data);
+    writeGrid(file, [&](vtkXMLUnstructuredGridWriter& writer) { writer.SetInputData(grid); });
+}
+
+void writeVtuInPieces(const std::filesystem::path& file, const VtuData& header, std::size_t points,
+                      const VtuPieceFill& fill, std::size_t pieceSize)
+{
+    if (pieceSize == 0)
+    {
+        throw std::logic_error("writeVtuInPieces: pieces of no points");
+    }
+    auto source = vtkSmartPointer<PieceSource>::New();
+    source->setUp(&header, points, pieceSize, &fill);
+    writeGrid(file, [&](vtkXMLUnstructuredGridWriter& writer) {
+        writer.SetInputConnection(source->GetOutputPort());
+        writer.SetNumberOfPieces(source->pieceCount());
     });
 }
 

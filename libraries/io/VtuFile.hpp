@@ -3,9 +3,12 @@
 // library: one VTK_VERTEX cell per point so ParaView shows the particles; appended binary data,
 // zlib-compressed; points and restart arrays in double precision so a file can restart a run
 // exactly, display-only arrays may be single precision. Written atomically (temp + rename);
-// VTK reads the arrays in place (no copy), so writing costs little memory beyond the data.
+// VTK reads the arrays in place (no copy), and a run's output is streamed in pieces
+// (writeVtuInPieces), so writing costs a few megabytes beyond the data, whatever its size.
 
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -20,7 +23,8 @@ struct VtuArray
     bool integer = false;       // stored as Int32 (ids, flags) instead of Float64
     // Names of the components shown by ParaView ("XX", "XY", ...); empty for defaults.
     std::vector<std::string> componentNames;
-    std::vector<float> singles; // written as Float32 instead of `values` when not empty
+    bool single = false;        // written as Float32: the values are in `singles`
+    std::vector<float> singles;
     bool readFromSingles = false; // (read back) the file stores it as Float32
 };
 
@@ -39,6 +43,21 @@ struct VtuData
 };
 
 void writeVtu(const std::filesystem::path& file, const VtuData& data);
+
+// Fills `piece` with the points [begin, end) of a dataset: their positions and point arrays
+// (the same arrays for every range; field data is not read from it).
+using VtuPieceFill = std::function<void(std::size_t begin, std::size_t end, VtuData& piece)>;
+
+// Points per piece of writeVtuInPieces: a few megabytes of arrays at a time.
+inline constexpr std::size_t defaultVtuPieceSize = 1u << 13;
+
+// The same file for `points` points made piece by piece: VTK's writer asks `fill` for one range
+// of at most `pieceSize` points at a time and streams it into the file, so only one piece's
+// arrays exist at any moment (a full copy of every written field costs a run 0.3-0.7 kB per
+// particle at each output). `header` gives the field data, string fields and active arrays.
+// ParaView and readVtu see one dataset, the pieces joined in order.
+void writeVtuInPieces(const std::filesystem::path& file, const VtuData& header, std::size_t points,
+                      const VtuPieceFill& fill, std::size_t pieceSize = defaultVtuPieceSize);
 
 // Reads a .vtu (any point arrays; field data of numbers or strings). Errors are InputErrors
 // naming the file.

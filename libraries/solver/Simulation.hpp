@@ -152,7 +152,7 @@ private:
                       double distance) const; // some owned particle, on any rank
     long globalIndex(std::size_t a) const; // the particle's index in the whole set
     std::string distributionReport(long steps) const; // repartitions, ghosts, bytes per step
-    void writePieces(const VtuData& data, double time); // this rank's piece (+ .pvtu on rank 0)
+    void writePieces(const VtuData& header, double time); // this rank's piece (+ .pvtu on rank 0)
 
     // SimulationOutput.cpp
     // Declares every per-particle field and run scalar of the solver itself (the models

@@ -167,7 +167,7 @@ void Simulation<D>::checkStatus(const ForceStatus& status, const std::string& wh
 // VTK/<case>_<n>.pvtu, which names them, and adds it to the series. A failed write on any rank
 // stops every rank with that rank's I/O error (nothing damaged replaces a good file).
 template <int D>
-void Simulation<D>::writePieces(const VtuData& data, double time)
+void Simulation<D>::writePieces(const VtuData& header, double time)
 {
     const std::string stem = caseName_ + "_" + std::to_string(outputIndex_);
     const std::filesystem::path folder = dicts_.caseDir() / "VTK";
@@ -176,7 +176,17 @@ void Simulation<D>::writePieces(const VtuData& data, double time)
     {
         pieces.push_back(stem + "/" + stem + "_" + std::to_string(r) + ".vtu");
     }
-    const VtuData piece = keepPoints(data, owned_);
+    std::vector<std::size_t> ownedParticles;
+    for (std::size_t a = 0; a < owned_.size(); ++a)
+    {
+        if (owned_[a])
+        {
+            ownedParticles.push_back(a);
+        }
+    }
+    const VtuPieceFill fill = [&](std::size_t begin, std::size_t end, VtuData& piece) {
+        writeStatePoints<D>(fields_, &ownedParticles, begin, end, piece);
+    };
     std::string error;
     try
     {
@@ -185,7 +195,8 @@ void Simulation<D>::writePieces(const VtuData& data, double time)
             std::filesystem::create_directories(folder / stem);
         }
         comm_.barrier();
-        writeVtu(folder / pieces[static_cast<std::size_t>(comm_.rank())], piece);
+        writeVtuInPieces(folder / pieces[static_cast<std::size_t>(comm_.rank())], header,
+                         ownedParticles.size(), fill);
     }
     catch (const IoError& failure)
     {
@@ -202,7 +213,9 @@ void Simulation<D>::writePieces(const VtuData& data, double time)
     }
     if (comm_.rank() == 0)
     {
-        writePvtu(folder / (stem + ".pvtu"), piece, pieces);
+        VtuData layout = header; // the arrays' names, types and components (no points)
+        fill(0, 0, layout);
+        writePvtu(folder / (stem + ".pvtu"), layout, pieces);
         pvd_.add(time, stem + ".pvtu");
         // An output written again after a restart on fewer ranks: the surplus pieces go.
         std::vector<std::filesystem::path> surplus;

@@ -245,29 +245,38 @@ void Simulation<D>::declareFields()
 template <int D>
 void Simulation<D>::writeOutput(const LevelView& level, const FunctionState& functionState)
 {
-    VtuData data;
+    // The points are written from level.x (the pieces are made while the file is written).
+    struct WrittenPositions
+    {
+        const std::vector<Vec<D>>*& written;
+        const std::vector<Vec<D>>* current;
+        ~WrittenPositions() { written = current; }
+    } restore{writtenX_, &particles_.x};
     writtenX_ = level.x;
-    writeState<D>(fields_, runScalars_, level.time, data);
-    writtenX_ = &particles_.x;
+    VtuData header;
+    writeStateHeader<D>(fields_, runScalars_, level.time, header);
     // What identifies the output itself (the level it holds, whether a restart may use it).
     const auto number = [](double value) { return VtuArray{1, {value}, false, {}, {}}; };
-    data.fieldData[std::string(restartPrefix) + "step"] = number(static_cast<double>(level.step));
-    data.fieldData[std::string(restartPrefix) + "restartable"] = number(level.restartable ? 1.0 : 0.0);
-    data.fieldData[std::string(restartPrefix) + "dimension"] = number(D);
+    header.fieldData[std::string(restartPrefix) + "step"] = number(static_cast<double>(level.step));
+    header.fieldData[std::string(restartPrefix) + "restartable"] = number(level.restartable ? 1.0 : 0.0);
+    header.fieldData[std::string(restartPrefix) + "dimension"] = number(D);
     for (const auto& [key, value] : functionState)
     {
-        data.fieldData[restartPrefix + key] = number(value);
+        header.fieldData[restartPrefix + key] = number(value);
     }
-    data.stringFields["bodyNames"] = bodyNames_;
+    header.stringFields["bodyNames"] = bodyNames_;
 
     if (distributed())
     {
-        writePieces(data, level.time);
+        writePieces(header, level.time);
     }
     else
     {
         const std::string name = caseName_ + "_" + std::to_string(outputIndex_) + ".vtu";
-        writeVtu(dicts_.caseDir() / "VTK" / name, data);
+        writeVtuInPieces(dicts_.caseDir() / "VTK" / name, header, particles_.size(),
+                         [this](std::size_t begin, std::size_t end, VtuData& piece) {
+                             writeStatePoints<D>(fields_, nullptr, begin, end, piece);
+                         });
         pvd_.add(level.time, name);
         lastOutputFile_ = name;
     }

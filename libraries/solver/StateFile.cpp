@@ -31,8 +31,10 @@ int displayIndex(FieldKind kind, int c)
     return c;
 }
 
+// The written points [begin, end) of `field`: point k is particle k, or (*selection)[k].
 template <int D>
-VtuArray arrayOf(const typename ParticleFields<D>::Field& field, std::size_t n)
+VtuArray arrayOf(const typename ParticleFields<D>::Field& field, const std::vector<std::size_t>* selection,
+                 std::size_t begin, std::size_t end)
 {
     const FieldSpec& spec = field.spec;
     const int native = field.components();
@@ -46,13 +48,14 @@ VtuArray arrayOf(const typename ParticleFields<D>::Field& field, std::size_t n)
     VtuArray array;
     array.components = shown;
     array.integer = spec.kind() == FieldKind::integer;
-    array.values.resize(n * static_cast<std::size_t>(shown));
+    array.single = spec.isSinglePrecision();
+    array.values.resize((end - begin) * static_cast<std::size_t>(shown));
     std::array<double, 27> value{};
-    for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t k = begin; k < end; ++k)
     {
-        double* out = &array.values[a * static_cast<std::size_t>(shown)];
+        double* out = &array.values[(k - begin) * static_cast<std::size_t>(shown)];
         std::copy(padding.begin(), padding.end(), out);
-        field.array->get(a, value.data());
+        field.array->get(selection ? (*selection)[k] : k, value.data());
         for (int c = 0; c < native; ++c)
         {
             out[display ? displayIndex<D>(spec.kind(), c) : c] = value[static_cast<std::size_t>(c)];
@@ -62,10 +65,10 @@ VtuArray arrayOf(const typename ParticleFields<D>::Field& field, std::size_t n)
     {
         array.componentNames = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};
     }
-    if (spec.isSinglePrecision())
+    if (array.single)
     {
         array.singles.assign(array.values.begin(), array.values.end());
-        array.values.clear();
+        array.values = {};
     }
     return array;
 }
@@ -115,10 +118,41 @@ void checkRestartFieldData(const VtuChecks& checks, const VtuData& data, const R
 } // namespace
 
 template <int D>
-void writeState(const ParticleFields<D>& fields, const RunScalars& scalars, double time,
-                VtuData& data)
+void writeStateHeader(const ParticleFields<D>& fields, const RunScalars& scalars, double time,
+                      VtuData& header)
 {
-    const std::size_t n = fields.size();
+    for (const auto& field : fields.all())
+    {
+        const FieldSpec& spec = field.spec;
+        if (spec.isScratch() || spec.name() == positionField || !spec.isActive())
+        {
+            continue;
+        }
+        std::string& active = spec.kind() == FieldKind::vector   ? header.activeVectors
+                              : spec.kind() == FieldKind::tensor ? header.activeTensors
+                                                                 : header.activeScalars;
+        if (!active.empty())
+        {
+            throw std::logic_error("two active " + toString(spec.kind()) + " fields: " + active +
+                                   " and " + spec.name());
+        }
+        active = spec.fileName();
+    }
+    header.fieldData["TimeValue"] = VtuArray{1, {time}, false, {}, {}};
+    for (const auto& scalar : scalars.all())
+    {
+        header.fieldData[restartPrefix + scalar.name] = VtuArray{1, {scalar.get()}, false, {}, {}};
+    }
+    for (const auto& array : scalars.arrays())
+    {
+        header.fieldData[restartPrefix + array.name] = VtuArray{1, *array.values, false, {}, {}};
+    }
+}
+
+template <int D>
+void writeStatePoints(const ParticleFields<D>& fields, const std::vector<std::size_t>* selection,
+                      std::size_t begin, std::size_t end, VtuData& piece)
+{
     for (const auto& field : fields.all())
     {
         const FieldSpec& spec = field.spec;
@@ -128,38 +162,25 @@ void writeState(const ParticleFields<D>& fields, const RunScalars& scalars, doub
         }
         if (spec.name() == positionField)
         {
-            data.points.assign(3 * n, 0.0);
+            piece.points.assign(3 * (end - begin), 0.0);
             std::array<double, 3> x{};
-            for (std::size_t a = 0; a < n; ++a)
+            for (std::size_t k = begin; k < end; ++k)
             {
-                field.array->get(a, x.data());
-                std::copy(x.begin(), x.begin() + D, &data.points[3 * a]);
+                field.array->get(selection ? (*selection)[k] : k, x.data());
+                std::copy(x.begin(), x.begin() + D, &piece.points[3 * (k - begin)]);
             }
             continue;
         }
-        data.pointData[spec.fileName()] = arrayOf<D>(field, n);
-        if (spec.isActive())
-        {
-            std::string& active = spec.kind() == FieldKind::vector   ? data.activeVectors
-                                  : spec.kind() == FieldKind::tensor ? data.activeTensors
-                                                                     : data.activeScalars;
-            if (!active.empty())
-            {
-                throw std::logic_error("two active " + toString(spec.kind()) + " fields: " +
-                                       active + " and " + spec.name());
-            }
-            active = spec.fileName();
-        }
+        piece.pointData[spec.fileName()] = arrayOf<D>(field, selection, begin, end);
     }
-    data.fieldData["TimeValue"] = VtuArray{1, {time}, false, {}, {}};
-    for (const auto& scalar : scalars.all())
-    {
-        data.fieldData[restartPrefix + scalar.name] = VtuArray{1, {scalar.get()}, false, {}, {}};
-    }
-    for (const auto& array : scalars.arrays())
-    {
-        data.fieldData[restartPrefix + array.name] = VtuArray{1, *array.values, false, {}, {}};
-    }
+}
+
+template <int D>
+void writeState(const ParticleFields<D>& fields, const RunScalars& scalars, double time,
+                VtuData& data)
+{
+    writeStateHeader<D>(fields, scalars, time, data);
+    writeStatePoints<D>(fields, nullptr, 0, fields.size(), data);
 }
 
 template <int D>
@@ -231,6 +252,14 @@ void readState(const VtuData& data, ParticleFields<D>& fields, const RunScalars&
     }
 }
 
+#define SPH_STATE_FILE_WRITERS(D)                                                                  \
+    template void writeStateHeader<D>(const ParticleFields<D>&, const RunScalars&, double, VtuData&); \
+    template void writeStatePoints<D>(const ParticleFields<D>&, const std::vector<std::size_t>*,     \
+                                      std::size_t, std::size_t, VtuData&);
+SPH_STATE_FILE_WRITERS(1)
+SPH_STATE_FILE_WRITERS(2)
+SPH_STATE_FILE_WRITERS(3)
+#undef SPH_STATE_FILE_WRITERS
 template void writeState<1>(const ParticleFields<1>&, const RunScalars&, double, VtuData&);
 template void writeState<2>(const ParticleFields<2>&, const RunScalars&, double, VtuData&);
 template void writeState<3>(const ParticleFields<3>&, const RunScalars&, double, VtuData&);

@@ -19,7 +19,9 @@
 #include "io/VtuFile.hpp"
 #include "particles/ParticleFields.hpp"
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 namespace sph
 {
@@ -27,6 +29,20 @@ namespace sph
 // The name of the field written as the points.
 inline constexpr const char* positionField = "position";
 
+// Everything but the points: the field data (time, run scalars and arrays) and the active
+// arrays.
+template <int D>
+void writeStateHeader(const ParticleFields<D>& fields, const RunScalars& scalars, double time,
+                      VtuData& header);
+
+// The written points [begin, end) and their point arrays: written point k is particle k, or
+// particle (*selection)[k] (a distributed run writes its owned particles only). With
+// io/VtuFile's writeVtuInPieces, a piece at a time.
+template <int D>
+void writeStatePoints(const ParticleFields<D>& fields, const std::vector<std::size_t>* selection,
+                      std::size_t begin, std::size_t end, VtuData& piece);
+
+// Both, for every particle, into one data set.
 template <int D>
 void writeState(const ParticleFields<D>& fields, const RunScalars& scalars, double time,
                 VtuData& data);
