@@ -270,7 +270,7 @@ void filterNeighbourList(const NeighbourList& candidates, const std::vector<Vec<
     const double radius2 = radius * radius;
     const std::size_t n = x.size();
     into.offsets.assign(n + 1, 0);
-    into.indices.resize(candidates.pairCount());
+    resizePairArray(into.indices, candidates.pairCount());
     std::vector<std::size_t> blockFirst(1, 0);
 #pragma omp parallel if (useThreads(n))
     {

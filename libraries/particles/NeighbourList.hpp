@@ -25,6 +25,20 @@ struct NeighbourList
     std::size_t maxCount() const;
 };
 
+// Resizes a per-pair array that is resized again whenever the lists change (a moving
+// reference: every step). When it must grow it grows to the new size plus 1/16:
+// std::vector::resize would double it, so a list that gained one pair would keep up to twice
+// its memory for the rest of the run.
+template <class T>
+void resizePairArray(std::vector<T>& values, std::size_t size)
+{
+    if (size > values.capacity())
+    {
+        values.reserve(size + size / 16);
+    }
+    values.resize(size);
+}
+
 // Cell-list search, O(N): every particle against the particles of its own and the adjacent
 // cells (cell size = radius). Pairs with |x_a - x_b| < radius and body[a] == body[b].
 template <int D>

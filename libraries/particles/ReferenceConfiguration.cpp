@@ -41,14 +41,14 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
     const std::size_t pairs = neighbours.pairCount();
     if (keepKernelValues)
     {
-        W.resize(pairs);
+        resizePairArray(W, pairs);
     }
     else
     {
         W.clear();
         W.shrink_to_fit();
     }
-    dWdrOverR.resize(pairs);
+    resizePairArray(dWdrOverR, pairs);
     const std::size_t n = size();
 #pragma omp parallel if (useThreads(n))
     {

@@ -61,7 +61,7 @@ public:
                                neighbours_.size() * stride_ == states_.size();
         // Into a buffer kept between moves (no allocation, no page faults once grown: the
         // reference moves every step). Slots of bodies without history are never read.
-        remapped_.resize(list.pairCount() * stride_);
+        resizePairArray(remapped_, list.pairCount() * stride_);
 #pragma omp parallel if (useThreads(n))
         {
             std::vector<double> owner(stride_, 0.0);
@@ -92,7 +92,7 @@ public:
             }
         }
         states_.swap(remapped_);
-        next_.resize(states_.size()); // every slot of a history body is written before a commit
+        resizePairArray(next_, states_.size()); // every slot of a history body is written before a commit
         offsets_.assign(list.offsets.begin(), list.offsets.end());
         neighbours_.assign(list.indices.begin(), list.indices.end());
         current_ = true;

@@ -52,8 +52,8 @@ ForceStatus Vidal<D>::prepare(const ReferenceConfiguration<D>& ref)
     const NeighbourList& list = ref.neighbours;
     const std::size_t n = ref.size();
     const Vec<D> shift = kernel_.h() * beta_;
-    out_.resize(list.pairCount());
-    in_.resize(list.pairCount());
+    resizePairArray(out_, list.pairCount());
+    resizePairArray(in_, list.pairCount());
 #pragma omp parallel for schedule(static) if (useThreads(n))
     for (std::size_t a = 0; a < n; ++a)
     {
