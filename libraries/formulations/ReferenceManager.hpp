@@ -35,9 +35,15 @@ public:
     // x^r = X, V^r = V0, F^r = I; builds everything. `status` names a singular particle.
     ForceStatus initialise(const ParticleSet<D>& particles)
     {
+        setInitial(particles);
+        return rebuild(particles.body);
+    }
+    // x^r = X, V^r = V0, F^r = I only: what depends on the neighbours is built later
+    // (restored(), or initialise() again), once the particles are known.
+    void setInitial(const ParticleSet<D>& particles)
+    {
         ref_.setInitial(particles, carriesK());
         ref_.updateStep = 0;
-        return rebuild(particles.body);
     }
 
     // A moving reference is part of the restart state (a fixed one is rebuilt from X).

@@ -25,6 +25,7 @@
 #include "artificialViscosity/ArtificialViscosity.hpp"
 #include "contact/Contact.hpp"
 #include "core/CaseDictionaries.hpp"
+#include "core/InputError.hpp"
 #include "core/WriteSchedule.hpp"
 #include "formulations/ReferenceManager.hpp"
 #include "functionObjects/FunctionObject.hpp"
@@ -125,6 +126,10 @@ private:
     [[noreturn]] void failWith(const std::string& diagnosis);
     long crossingParticle() const;
     std::string particleName(std::size_t a) const;
+    // The setup's error for a particle whose corrected gradient is singular in the initial
+    // configuration (the run cannot start; serially at construction, distributed at the first
+    // gathering of each rank's particles).
+    InputError tooFewNeighbours(const std::string& particle, const std::string& what) const;
 
     // SimulationDistributed.cpp and SimulationGhosts.cpp (the ghost layer): a run on several
     // ranks (sphSolid -parallel; docs/parallel.md)
@@ -174,6 +179,8 @@ private:
     RunScalars runScalars_;
     std::vector<std::string> bodyNames_;
     double spacing_ = 0.0;
+    SourceLocation kernelLocation_; // where hOverDx is set (or the kernel's dictionary)
+    bool neighbourhoodsChecked_ = false; // a distributed run's first gathering has checked them
     Vec<D> gravity_ = Vec<D>::Zero();
 
     std::unique_ptr<Kernel> kernel_;

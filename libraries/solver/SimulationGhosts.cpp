@@ -9,6 +9,7 @@
 #include "parallel/RcbPartition.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace sph
 {
@@ -149,7 +150,27 @@ void Simulation<D>::localParticlesChanged()
                                    ? reference_->restored(particles_)
                                    : reference_->initialise(particles_);
     // Only owned particles are checked (a ghost's neighbourhood may be cut where the rank's
-    // particles end), and theirs are whole: the serial run's, which passed at setup.
+    // particles end), and theirs are whole: the serial run's. The first time, that is the
+    // setup's check (the whole set's neighbourhoods were never built on one rank): the serial
+    // run's input error, worded by the owner of the failing particle with the least global
+    // index, thrown by every rank alike (and so reported once).
+    if (!neighbourhoodsChecked_)
+    {
+        neighbourhoodsChecked_ = true;
+        constexpr double none = std::numeric_limits<double>::infinity();
+        const bool singular = !status.ok() && status.failure == FailureKind::singularReference;
+        const double mine =
+            singular ? static_cast<double>(globalIndex(static_cast<std::size_t>(status.badParticle))) : none;
+        const double first = comm_.minimum(mine);
+        if (first != none)
+        {
+            const auto root = static_cast<int>(comm_.minimum(mine == first ? comm_.rank() : none));
+            const bool here = comm_.rank() == root;
+            const std::string particle = comm_.broadcast(
+                here ? particleName(static_cast<std::size_t>(status.badParticle)) : "", root);
+            throw tooFewNeighbours(particle, comm_.broadcast(here ? status.message : "", root));
+        }
+    }
     checkStatus(status, "rebuilding the reference configuration of a rank's particles");
 }
 

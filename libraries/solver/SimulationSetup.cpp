@@ -61,18 +61,23 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
     setupFunctionObjects();
 
     reference_ = std::make_unique<ReferenceManager<D>>(*formulation_, *scheme_, *kernel_);
-    const ForceStatus status = reference_->initialise(particles_);
-    if (!status.ok())
+    const Entry* hOverDx = schemes.kernel->find("hOverDx");
+    kernelLocation_ = hOverDx ? hOverDx->valueLocation() : schemes.kernel->location();
+    if (comm_.parallel())
     {
-        const Entry* hOverDx = schemes.kernel->find("hOverDx");
-        throw InputError(hOverDx ? hOverDx->valueLocation() : schemes.kernel->location(),
-                         particleName(static_cast<std::size_t>(status.badParticle)) +
-                             " has too few neighbours: its " + status.message +
-                             " is singular in the initial configuration",
-                         {"Increase hOverDx (now " + std::to_string(kernel_->hOverDx()) +
-                              ") or check the geometry in system/particlesDict (isolated "
-                              "particles, bodies thinner than two spacings).",
-                          "Open constant/particles.vtu in ParaView to see the particles."});
+        // A distributed run builds the neighbourhoods of each rank's share only, when it has
+        // one (distribute()): every rank holds the whole set until then, but not the pairs of
+        // the whole set, which are most of its memory.
+        reference_->setInitial(particles_);
+    }
+    else
+    {
+        const ForceStatus status = reference_->initialise(particles_);
+        if (!status.ok())
+        {
+            throw tooFewNeighbours(particleName(static_cast<std::size_t>(status.badParticle)),
+                                   status.message);
+        }
     }
 
     const std::size_t n = particles_.size();
@@ -90,6 +95,18 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
 
 template <int D>
 Simulation<D>::~Simulation() = default;
+
+template <int D>
+InputError Simulation<D>::tooFewNeighbours(const std::string& particle, const std::string& what) const
+{
+    return InputError(kernelLocation_,
+                      particle + " has too few neighbours: its " + what +
+                          " is singular in the initial configuration",
+                      {"Increase hOverDx (now " + std::to_string(kernel_->hOverDx()) +
+                           ") or check the geometry in system/particlesDict (isolated "
+                           "particles, bodies thinner than two spacings).",
+                       "Open constant/particles.vtu in ParaView to see the particles."});
+}
 
 template <int D>
 void Simulation<D>::loadParticles(const InitialParticles& initial)

@@ -29,6 +29,13 @@ sph_add_solver_run("refuses a 1D case on 2 ranks" 2 ${sphDykaBar} refused)
 # base), updated-Lagrangian gradF (the reference moves, and the ghosts are gathered again, every
 # step) and total-Lagrangian gradF, on 2, 3 and 4 ranks.
 set(sphTwistingColumn ${CMAKE_SOURCE_DIR}/tutorials/hardCases/twistingColumn)
+# Too few neighbours in the initial configuration: a distributed run checks its ranks' shares
+# when it first has them (it never builds the whole set's neighbourhoods on one rank), and
+# reports the serial run's input error, once.
+foreach(ranks 2 3)
+    sph_add_solver_run("too few neighbours reported once on ${ranks} ranks" ${ranks}
+                       ${sphTwistingColumn} sameError -set kernel.hOverDx=0.55)
+endforeach()
 foreach(ranks 2 3 4)
     sph_add_solver_run("UL gradF 3D column bit-identical on ${ranks} ranks" ${ranks}
                        ${sphTwistingColumn} bitIdentical -threads 1 -set endTime=0.01
