@@ -163,13 +163,11 @@ private:
     std::vector<std::uint32_t> sorted_;
 };
 
-// The per-thread buffers of a search pass (one per thread, owned by the calling thread). Kept
-// between calls for the searches that run every step (contact's cross lists): allocating and
-// page-faulting megabytes each step would cost more than the search. A search that runs rarely
-// releases them afterwards (releaseSearchBuffers): in 3D they are as large as the list itself.
+// The per-thread buffers of a one-pass search (one per thread, owned by the calling thread),
+// kept between calls: contact searches its cross lists every step, and allocating and
+// page-faulting the buffers each step would cost more than the search. (Its lists are short:
+// the particles near another body.)
 thread_local std::vector<std::vector<std::uint32_t>> searchBuffers;
-
-void releaseSearchBuffers() { std::vector<std::vector<std::uint32_t>>().swap(searchBuffers); }
 
 // Fills the CSR list in one search pass: each thread searches a contiguous block of particles
 // into its own buffer, then the buffers are copied in block order, so the result is the same
@@ -226,26 +224,48 @@ NeighbourList fillLists(std::size_t n, Candidates&& candidates)
 
 } // namespace
 
+// Two passes over the cells, counting then filling each particle's slots in place: no buffer
+// besides the list (a per-thread copy of it would double the peak of a rebuild, 0.5 kB per
+// particle in 3D). The search runs once (a fixed reference) or rarely (a moving reference's
+// candidates), so searching twice costs little.
 template <int D>
 NeighbourList buildNeighbourList(const std::vector<Vec<D>>& x, const std::vector<int>& body,
                                  double radius)
 {
     const CellGrid<D> grid(x, radius);
     const double radius2 = radius * radius;
-    NeighbourList list = fillLists<D>(x.size(), [&](std::size_t a, std::vector<std::uint32_t>& found) {
-        const std::size_t first = found.size() + 1;
-        found.push_back(static_cast<std::uint32_t>(a));
+    const std::size_t n = x.size();
+    const auto near = [&](std::size_t a, std::uint32_t b) {
+        return b != a && body[b] == body[a] && (x[b] - x[a]).squaredNorm() < radius2;
+    };
+    NeighbourList list;
+    list.offsets.assign(n + 1, 0);
+#pragma omp parallel for schedule(static) if (useThreads(n))
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        std::uint32_t count = 1; // the particle itself
+        grid.forEachNear(x[a], [&](std::uint32_t b) { count += near(a, b) ? 1 : 0; });
+        list.offsets[a + 1] = count;
+    }
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        list.offsets[a + 1] += list.offsets[a];
+    }
+    list.indices.resize(list.offsets[n]);
+#pragma omp parallel for schedule(static) if (useThreads(n))
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        std::uint32_t* slot = &list.indices[list.offsets[a]];
+        *slot++ = static_cast<std::uint32_t>(a);
+        std::uint32_t* first = slot;
         grid.forEachNear(x[a], [&](std::uint32_t b) {
-            if (b != a && body[b] == body[a] && (x[b] - x[a]).squaredNorm() < radius2)
+            if (near(a, b))
             {
-                found.push_back(b);
+                *slot++ = b;
             }
         });
-        std::sort(found.begin() + static_cast<long>(first), found.end());
-    });
-    // Built once (a fixed reference) or rarely (a moving one's candidates): not worth keeping
-    // a second copy of the list for.
-    releaseSearchBuffers();
+        std::sort(first, slot);
+    }
     return list;
 }
 
