@@ -31,11 +31,12 @@ VtuData lastOutput(const std::filesystem::path& caseDir)
 }
 
 void checkRestart(const std::filesystem::path& whole, const std::filesystem::path& split,
-                  double endTime, double stopTime, const std::vector<std::string>& tables)
+                  double endTime, double stopTime, const std::vector<std::string>& tables,
+                  const std::vector<std::string>& particleArgs = {})
 {
-    REQUIRE(test::runParticles(whole) == 0);
+    REQUIRE(test::runParticles(whole, particleArgs) == 0);
     REQUIRE(test::runSolver(whole, {"-set", "endTime=" + std::to_string(endTime)}) == 0);
-    REQUIRE(test::runParticles(split) == 0);
+    REQUIRE(test::runParticles(split, particleArgs) == 0);
     REQUIRE(test::runSolver(split, {"-set", "endTime=" + std::to_string(stopTime)}) == 0);
     REQUIRE(test::runSolver(split, {"-set", "endTime=" + std::to_string(endTime), "-set",
                                     "controlDict.startFrom=latestTime"}) == 0);
@@ -73,6 +74,27 @@ TEST_CASE("restart continues bit-identically: 2D updated-Lagrangian gradF", "[re
     const auto whole = test::writeBlockCase(one.path() / "block", schemes, 1e-3, 1e-4);
     const auto split = test::writeBlockCase(two.path() / "block", schemes, 1e-3, 1e-4);
     checkRestart(whole, split, 1e-3, 0.45e-3, {"energy", "corner"});
+}
+
+TEST_CASE("restart continues bit-identically from an output written in several pieces",
+          "[restart]")
+{
+    // The flagship at half its spacing: 17 608 particles, so each output is streamed in three
+    // pieces (io/VtuFile's writeVtuInPieces, 8192 particles each), which the restart reads
+    // back as one set.
+    test::TempDir one;
+    test::TempDir two;
+    const auto whole = test::copyTutorial("rings2D/collidingRings", one.path());
+    const auto split = test::copyTutorial("rings2D/collidingRings", two.path());
+    for (const auto& dir : {whole, split})
+    {
+        test::setEntry(dir / "system" / "controlDict", "writeInterval", "8e-6");
+    }
+    const std::vector<std::string> halfSpacing{"-set", "ringA.spacing=5e-4", "-set",
+                                               "ringB.spacing=5e-4"};
+    checkRestart(whole, split, 2.4e-5, 0.8e-5, {"energy", "extent"}, halfSpacing);
+    REQUIRE(lastOutput(whole).pointCount() == 17608);
+    REQUIRE(lastOutput(whole).pointCount() > 2 * defaultVtuPieceSize);
 }
 
 TEST_CASE("restart continues bit-identically: 2D updated-Lagrangian with viscosity",
