@@ -57,6 +57,9 @@ public:
     // The run header: case, dimension, models with their coefficients.
     std::vector<std::string> describe() const;
     RunSummary run(RunLog& log);
+    // What a dry run checks beyond construction: on several ranks, the partition and each
+    // rank's initial neighbourhoods (a serial run checked them when it was built).
+    void checkSetup();
 
     const ParticleSet<D>& particles() const { return particles_; }
 

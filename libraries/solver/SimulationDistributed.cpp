@@ -72,6 +72,15 @@ long Simulation<D>::globalIndex(std::size_t a) const
 }
 
 template <int D>
+void Simulation<D>::checkSetup()
+{
+    if (comm_.parallel() && !distributed())
+    {
+        distribute();
+    }
+}
+
+template <int D>
 void Simulation<D>::distribute()
 {
     checkDistributable();

@@ -20,7 +20,11 @@ foreach(ranks 2 3)
     sph_add_solver_run("bad sphSchemes reported once on ${ranks} ranks" ${ranks}
                        ${CMAKE_SOURCE_DIR}/tests/errors/unknownStabilisation sameError)
 endforeach()
-sph_add_solver_run("dry run once on 2 ranks" 2 ${sphDykaBar} dryRunOnce)
+# A dry run partitions the case and checks each rank's neighbourhoods, as the run would (so a
+# 1D case is refused by a dry run too).
+sph_add_solver_run("dry run once on 2 ranks" 2
+                   ${CMAKE_SOURCE_DIR}/tutorials/hardCases/twistingColumn dryRunOnce)
+sph_add_solver_run("dry run refuses a 1D case on 2 ranks" 2 ${sphDykaBar} refused -dryRun)
 sph_add_solver_run("on 1 rank writes the serial output" 1 ${sphDykaBar} sameResults
                    -threads 1 -set endTime=5e-4)
 sph_add_solver_run("refuses a 1D case on 2 ranks" 2 ${sphDykaBar} refused)
@@ -36,6 +40,8 @@ foreach(ranks 2 3)
     sph_add_solver_run("too few neighbours reported once on ${ranks} ranks" ${ranks}
                        ${sphTwistingColumn} sameError -set kernel.hOverDx=0.55)
 endforeach()
+sph_add_solver_run("too few neighbours reported once by a dry run on 2 ranks" 2
+                   ${sphTwistingColumn} sameError -dryRun -set kernel.hOverDx=0.55)
 foreach(ranks 2 3 4)
     sph_add_solver_run("UL gradF 3D column bit-identical on ${ranks} ranks" ${ranks}
                        ${sphTwistingColumn} bitIdentical -threads 1 -set endTime=0.01

@@ -52,6 +52,7 @@ int runDimension(const CaseDictionaries& dicts, const ControlSettings& control,
     log.header(simulation.describe());
     if (dryRun)
     {
+        simulation.checkSetup();
         log.line("Dry run: every dictionary is valid and every model was built; not running.");
         return 0;
     }
