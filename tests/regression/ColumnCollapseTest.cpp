@@ -32,7 +32,7 @@ TEST_CASE("column collapse, coarse: TL gradF deposits the column near the measur
     CHECK(energy.column("kinetic").back() < 1e-3 * energy.column("external").back());
 }
 
-TEST_CASE("column collapse, coarse: UL none completes; its time step does not collapse (P2.6)",
+TEST_CASE("column collapse, coarse: UL none completes, its time step does not collapse (P2.6)",
           "[geomaterials][columnCollapse][timeStep]")
 {
     // With the total-F bound (P2.5) the step fell a hundredfold as the flow sheared the column

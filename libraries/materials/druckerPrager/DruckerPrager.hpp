@@ -16,7 +16,7 @@
 // η, ξ from φ and η̄ from ψ by the cone's matching to Mohr–Coulomb (planeStrain: Bui et al.
 // 2008; outer/inner: de Souza Neto et al. 2008 §8.2.4). ψ = 0: no plastic volume change on
 // the cone; ψ = φ: associative. The energy is W = Ψ(εe) + τ:Δεp (P9.4), the step's plastic
-// work being what a commit dissipates; without yielding this is `hencky` to the bit. With
+// work being what a commit dissipates; without yielding this is `hencky` to round-off. With
 // ψ ≠ φ the stress is not ∂W/∂F (no incremental potential). α (output only):
 // α += √(2/3)|dev Δεp|. 2D plane strain and 3D only (registered so: a 1D case is told so).
 // Keys:

@@ -11,7 +11,7 @@
 //
 // Every stress is a trial return from the particle's committed state (HistoryOf); the state
 // changes only in commit(), once per accepted level (§P7). Without yielding this is `hencky`
-// to the bit. The energy evaluated is the incremental potential W = Ψ(εe) + Ψh(α) + σy0 Δγ
+// to round-off. The energy evaluated is the incremental potential W = Ψ(εe) + Ψh(α) + σy0 Δγ
 // (P4.2), of which the stress is the derivative; a commit dissipates σy0 Δγ per unit volume.
 // All but the return itself is ReturnMapPlasticity's.
 // Keys:

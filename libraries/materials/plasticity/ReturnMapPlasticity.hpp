@@ -18,7 +18,7 @@
 //       of the model's own in place of Hencky's (druckerPrager: no volumetric stress beyond
 //       its tensile strength, §P9)
 //
-// Without plastic flow (now or before) the energy and the stress are `hencky`'s to the bit.
+// Without plastic flow (now or before) the energy and the stress are `hencky`'s to round-off.
 
 #include "materials/LogarithmicElasticity.hpp"
 #include "materials/plasticity/PlasticHistory.hpp"
@@ -192,7 +192,7 @@ ReturnMapPlasticity<D, Model>::returnMap(const Mat<D>& F, const State& committed
     }
     if (committed.alpha > 0.0 || r.flow.deltaGamma > 0.0)
     {
-        // Without any plastic flow the energy stays Hencky's to the bit.
+        // Without any plastic flow the energy stays Hencky's (to round-off).
         r.energy += model().extraEnergy(r.flow);
     }
     r.next.alpha = r.flow.alpha;

@@ -32,7 +32,7 @@ TEST_CASE("entries: words, numbers, strings and their locations", "[parser]")
     CHECK(dict->find("count")->items()[0].number() == -40);
 }
 
-TEST_CASE("numbers are decimal only; other words stay words", "[parser]")
+TEST_CASE("numbers are decimal only, other words stay words", "[parser]")
 {
     const auto dict = parse("a 0x10; b inf; c nan; d 1.5e+2; e .5; f libX.so; g -;");
     CHECK(dict->find("a")->items()[0].kind() == Item::Kind::Word);

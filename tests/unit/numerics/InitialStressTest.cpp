@@ -97,7 +97,7 @@ TEST_CASE("an initial stress in 1D: the bar's j2Plasticity", "[plasticity][initi
     CHECK(point.stress(Mat<1>::Identity())(0, 0) == Approx(-3e4).epsilon(1e-12));
 }
 
-TEST_CASE("only materials with history start from a stress; the at-rest coefficients",
+TEST_CASE("only materials with history start from a stress, the at-rest coefficients",
           "[plasticity][initialStress]")
 {
     test::MaterialPoint<2> hencky("type hencky; E 7.2e6; nu 0.2; rho 2000;");

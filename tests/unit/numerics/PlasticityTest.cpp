@@ -370,14 +370,17 @@ void noYieldIsHencky()
         Mat<D> P;
         double psi;
         hencky->evaluate(&F, &P, &psi, 1, HistoryOf::particles(0));
-        CHECK(point.stress(F) == P); // bitwise
-        CHECK(point.energy(F) == psi);
+        // To round-off, not to the bit: j2Plasticity takes the trial strains of
+        // be = F Cp⁻¹ Fᵀ (its own, 2D's zz component apart) and P = τ F⁻ᵀ along its own path.
+        INFO(D << "D, trial " << trial);
+        CHECK((point.stress(F) - P).cwiseAbs().maxCoeff() <= 1e-13 * P.cwiseAbs().maxCoeff());
+        CHECK(std::abs(point.energy(F) - psi) <= 1e-13 * std::abs(psi));
         CHECK(point.commit(F) == 0.0);
     }
     CHECK(point.alpha() == 0.0);
 }
 
-TEST_CASE("j2Plasticity without yielding is hencky to the bit; commit dissipates nothing",
+TEST_CASE("j2Plasticity without yielding is hencky to round-off, commit dissipates nothing",
           "[plasticity]")
 {
     noYieldIsHencky<1>();

@@ -104,7 +104,7 @@ TEST_CASE("a failed atomic write names the target, keeps the old file, leaves no
     CHECK(temporariesUnder(dir.path()).empty());
 }
 
-TEST_CASE("a table row that cannot be written stops the run; the table keeps whole rows",
+TEST_CASE("a table row that cannot be written stops the run, the table keeps whole rows",
           "[output][diskFull]")
 {
     test::TempDir dir;
@@ -130,7 +130,7 @@ TEST_CASE("a table row that cannot be written stops the run; the table keeps who
     CHECK(rows > 5);
 }
 
-TEST_CASE("a .vtu that cannot be written stops the run with exit 4; earlier ones are intact",
+TEST_CASE("a .vtu that cannot be written stops the run with exit 4, earlier ones are intact",
           "[output][diskFull]")
 {
     // A run without the limit gives the sizes of the outputs; the limit is set so that the

@@ -90,7 +90,7 @@ TEST_CASE("viscosity in a run: momentum conserved, dissipative, balance closes (
     }
 }
 
-TEST_CASE("viscosity none: no viscousWork column, same run as without the entry; monaghan "
+TEST_CASE("viscosity none: no viscousWork column, same run as without the entry, monaghan "
           "bounds the time step",
           "[viscosity]")
 {

@@ -95,7 +95,7 @@ TEST_CASE("walls: a frictionless bounce keeps the energy balance", "[walls]")
     CHECK(test::summaryValue(folder, "functions/energy/maxDrift") < 1e-3);
 }
 
-TEST_CASE("walls: a moving wall's work is the energy it gives; removeAt stops it", "[walls]")
+TEST_CASE("walls: a moving wall's work is the energy it gives, removeAt stops it", "[walls]")
 {
     // A wall at 0.5 m/s hits the block at rest (no gravity) and is removed at 0.5 ms, while it
     // still pushes (alone the block would leave the wall at about 1.3 ms).
