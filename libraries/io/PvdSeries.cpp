@@ -97,4 +97,32 @@ void PvdSeries::write() const
     writeTextAtomically(file_, text.str());
 }
 
+// The output index of `fileName` if it is one of this case's outputs, else -1: "<case>_<n>.vtu"
+// (serial), "<case>_<n>.pvtu" and the folder "<case>_<n>" of its pieces (distributed).
+long outputIndexOf(const std::string& fileName, const std::string& caseName)
+{
+    const std::string prefix = caseName + "_";
+    std::string suffix;
+    for (const char* candidate : {".vtu", ".pvtu"})
+    {
+        const std::string ending = candidate;
+        if (fileName.size() > ending.size() &&
+            fileName.compare(fileName.size() - ending.size(), ending.size(), ending) == 0)
+        {
+            suffix = ending;
+        }
+    }
+    if (fileName.size() <= prefix.size() + suffix.size() || fileName.rfind(prefix, 0) != 0)
+    {
+        return -1;
+    }
+    const std::string digits =
+        fileName.substr(prefix.size(), fileName.size() - prefix.size() - suffix.size());
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos)
+    {
+        return -1;
+    }
+    return std::stol(digits);
+}
+
 } // namespace sph

@@ -40,4 +40,8 @@ private:
     std::vector<Entry> entries_;
 };
 
+// The output index of `fileName` if it is one of this case's outputs, else -1: "<case>_<n>.vtu"
+// (serial), "<case>_<n>.pvtu" and the folder "<case>_<n>" of its pieces (distributed).
+long outputIndexOf(const std::string& fileName, const std::string& caseName);
+
 } // namespace sph

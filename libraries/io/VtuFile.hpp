@@ -23,9 +23,9 @@ struct VtuArray
     bool integer = false;       // stored as Int32 (ids, flags) instead of Float64
     // Names of the components shown by ParaView ("XX", "XY", ...); empty for defaults.
     std::vector<std::string> componentNames;
-    bool single = false;        // written as Float32: the values are in `singles`
-    std::vector<float> singles;
+    std::vector<float> singles; // the values of a `single` array
     bool readFromSingles = false; // (read back) the file stores it as Float32
+    bool single = false;          // written as Float32, from `singles`
 };
 
 struct VtuData

@@ -149,6 +149,9 @@ private:
     // Fails when the status does (distributed: when any rank's does, with the diagnosis of the
     // failing particle of least global index, on every rank).
     void checkStatus(const ForceStatus& status, const std::string& when);
+    // Collective: the rank owning the failing particle with the least global index, which
+    // words the diagnosis every rank reports (-1: no rank has one; badParticle < 0: none here).
+    int wordingRank(long badParticle) const;
     double ghostWidth() const;         // how far from its owned particles a rank needs ghosts
     double ghostSkin() const;          // the part of it that lets particles move between gathers
     double currentReach() const;       // how far models read other particles in x (0: none)

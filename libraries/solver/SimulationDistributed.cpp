@@ -158,18 +158,28 @@ void Simulation<D>::checkStatus(const ForceStatus& status, const std::string& wh
         }
         return;
     }
-    constexpr double none = std::numeric_limits<double>::infinity();
-    const double mine =
-        status.ok() ? none : static_cast<double>(globalIndex(static_cast<std::size_t>(status.badParticle)));
-    const double first = comm_.minimum(mine);
-    if (first == none)
+    const int root = wordingRank(!status.ok() ? status.badParticle : -1);
+    if (root < 0)
     {
         return;
     }
-    const auto root = static_cast<int>(comm_.minimum(mine == first ? comm_.rank() : none));
     const std::string diagnosis =
         comm_.broadcast(comm_.rank() == root ? describeFailure(status, when) : "", root);
     failWith(diagnosis);
+}
+
+template <int D>
+int Simulation<D>::wordingRank(long badParticle) const
+{
+    constexpr double none = std::numeric_limits<double>::infinity();
+    const double mine =
+        badParticle < 0 ? none : static_cast<double>(globalIndex(static_cast<std::size_t>(badParticle)));
+    const double first = comm_.minimum(mine);
+    if (first == none)
+    {
+        return -1;
+    }
+    return static_cast<int>(comm_.minimum(mine == first ? comm_.rank() : none));
 }
 
 // Each rank writes its owned particles as VTK/<case>_<n>/<case>_<n>_<rank>.vtu; rank 0 writes

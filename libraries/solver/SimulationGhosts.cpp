@@ -9,7 +9,6 @@
 #include "parallel/RcbPartition.hpp"
 
 #include <algorithm>
-#include <limits>
 
 namespace sph
 {
@@ -157,14 +156,10 @@ void Simulation<D>::localParticlesChanged()
     if (!neighbourhoodsChecked_)
     {
         neighbourhoodsChecked_ = true;
-        constexpr double none = std::numeric_limits<double>::infinity();
         const bool singular = !status.ok() && status.failure == FailureKind::singularReference;
-        const double mine =
-            singular ? static_cast<double>(globalIndex(static_cast<std::size_t>(status.badParticle))) : none;
-        const double first = comm_.minimum(mine);
-        if (first != none)
+        const int root = wordingRank(singular ? status.badParticle : -1);
+        if (root >= 0)
         {
-            const auto root = static_cast<int>(comm_.minimum(mine == first ? comm_.rank() : none));
             const bool here = comm_.rank() == root;
             const std::string particle = comm_.broadcast(
                 here ? particleName(static_cast<std::size_t>(status.badParticle)) : "", root);
