@@ -6,6 +6,7 @@
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 
+#include <algorithm>
 #include <numeric>
 #include <sstream>
 
@@ -112,13 +113,32 @@ VtuData readPvtu(const std::filesystem::path& file, const std::string& orderBy)
         refuse("it names no pieces");
     }
     VtuData joined;
+    std::vector<std::string> ragged; // field data whose tuples belong to the points
     for (std::size_t i = 0; i < pieces.size(); ++i)
     {
         VtuData piece = readVtu(pieces[i]);
         if (i == 0)
         {
             joined = std::move(piece);
+            for (const auto& [arrayName, array] : joined.fieldData)
+            {
+                if (joined.pointData.count(arrayName + raggedCountSuffix))
+                {
+                    ragged.push_back(arrayName);
+                }
+            }
             continue;
+        }
+        for (const std::string& arrayName : ragged)
+        {
+            const auto found = piece.fieldData.find(arrayName);
+            if (found == piece.fieldData.end())
+            {
+                refuse("its piece '" + pieces[i].string() + "' has no field data '" + arrayName +
+                       "' like the first piece's");
+            }
+            std::vector<double>& values = joined.fieldData.at(arrayName).values;
+            values.insert(values.end(), found->second.values.begin(), found->second.values.end());
         }
         joined.points.insert(joined.points.end(), piece.points.begin(), piece.points.end());
         for (auto& [arrayName, array] : joined.pointData)
@@ -166,6 +186,36 @@ VtuData readPvtu(const std::filesystem::path& file, const std::string& orderBy)
     {
         reorder(joined.pointData.at(arrayName).values, array.values,
                 static_cast<std::size_t>(array.components));
+    }
+    // Each point's tuples move with it.
+    for (const std::string& arrayName : ragged)
+    {
+        const std::vector<double>& counts = joined.pointData.at(arrayName + raggedCountSuffix).values;
+        const VtuArray& from = joined.fieldData.at(arrayName);
+        const auto width = static_cast<std::size_t>(std::max(from.components, 1));
+        std::vector<std::size_t> first(n + 1, 0); // of each row's tuples
+        for (std::size_t row = 0; row < n; ++row)
+        {
+            const double count = counts[row];
+            if (!(count >= 0.0 && count < 1e15) || count != static_cast<double>(static_cast<std::size_t>(count)))
+            {
+                refuse("its point array '" + arrayName + raggedCountSuffix + "' is not a count");
+            }
+            first[row + 1] = first[row] + static_cast<std::size_t>(count) * width;
+        }
+        if (first[n] != from.values.size())
+        {
+            refuse("its field data '" + arrayName + "' holds " + std::to_string(from.values.size()) +
+                   " values, its point array '" + arrayName + raggedCountSuffix + "' counts " +
+                   std::to_string(first[n]));
+        }
+        std::vector<double>& to = ordered.fieldData.at(arrayName).values;
+        auto out = to.begin();
+        for (std::size_t g = 0; g < n; ++g)
+        {
+            out = std::copy(from.values.begin() + static_cast<long>(first[at[g]]),
+                            from.values.begin() + static_cast<long>(first[at[g] + 1]), out);
+        }
     }
     return ordered;
 }

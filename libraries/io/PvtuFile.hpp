@@ -24,7 +24,9 @@ void writePvtu(const std::filesystem::path& file, const VtuData& layout,
 
 // A .pvtu's pieces read and joined into one data set, the points in increasing `orderBy` (an
 // integer point array every piece holds, numbering the points 0 .. n-1 once each), with the
-// field data of the first piece. Errors are InputErrors naming the file.
+// field data of the first piece, but for the arrays whose tuples belong to the points
+// (raggedCountSuffix): those are joined too, in the points' new order. Errors are InputErrors
+// naming the file.
 VtuData readPvtu(const std::filesystem::path& file, const std::string& orderBy);
 
 } // namespace sph

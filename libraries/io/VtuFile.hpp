@@ -28,6 +28,12 @@ struct VtuArray
     bool single = false;          // written as Float32, from `singles`
 };
 
+// A field-data array X whose tuples belong to the points, a variable number each (a ragged
+// particle field, particles/RaggedArray.hpp): the point array X + raggedCountSuffix says how
+// many tuples each point has, and the tuples follow the points' order. readPvtu keeps it so
+// when it joins pieces.
+inline constexpr const char* raggedCountSuffix = "Count";
+
 struct VtuData
 {
     std::vector<double> points;                  // 3 per point

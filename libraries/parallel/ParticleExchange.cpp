@@ -36,6 +36,42 @@ void ParticleExchange<D>::appendRow(const ParticleFields<D>& fields, std::size_t
             rows.insert(rows.end(), value, value + field.components());
         }
     }
+    // Then each ragged field: the particle's entry count, then its entries.
+    for (const RaggedArray* array : fields.ragged())
+    {
+        const std::size_t count = array->entries(a);
+        rows.push_back(static_cast<double>(count));
+        rows.resize(rows.size() + count * array->width());
+        array->get(a, rows.data() + rows.size() - count * array->width());
+    }
+}
+
+// Where each row of `rows` starts (rows are longer than rowWidth by their ragged entries).
+template <int D>
+std::vector<std::size_t> ParticleExchange<D>::rowStarts(const ParticleFields<D>& fields,
+                                                        const Rows& rows)
+{
+    const std::size_t width = rowWidth(fields);
+    std::vector<std::size_t> starts;
+    std::size_t at = 0;
+    while (at < rows.size())
+    {
+        starts.push_back(at);
+        at += width;
+        for (const RaggedArray* array : fields.ragged())
+        {
+            if (at >= rows.size())
+            {
+                throw std::logic_error("ParticleExchange: ranks disagree on the particle fields");
+            }
+            at += 1 + static_cast<std::size_t>(rows[at]) * array->width();
+        }
+        if (at > rows.size())
+        {
+            throw std::logic_error("ParticleExchange: ranks disagree on the particle fields");
+        }
+    }
+    return starts;
 }
 
 template <int D>
@@ -43,28 +79,50 @@ void ParticleExchange<D>::replaceBy(ParticleFields<D>& fields, const Rows& rows,
                                     std::vector<std::size_t>& origin)
 {
     const std::size_t width = rowWidth(fields);
-    const std::size_t count = rows.size() / width;
-    if (count * width != rows.size())
-    {
-        throw std::logic_error("ParticleExchange: ranks disagree on the particle fields");
-    }
+    const std::vector<std::size_t> starts = rowStarts(fields, rows);
+    const std::size_t count = starts.size();
     origin.resize(count);
     std::iota(origin.begin(), origin.end(), std::size_t{0});
     std::sort(origin.begin(), origin.end(),
-              [&](std::size_t i, std::size_t j) { return rows[i * width] < rows[j * width]; });
+              [&](std::size_t i, std::size_t j) { return rows[starts[i]] < rows[starts[j]]; });
     for (std::size_t k = 1; k < count; ++k)
     {
-        if (rows[origin[k] * width] == rows[origin[k - 1] * width])
+        if (rows[starts[origin[k]]] == rows[starts[origin[k - 1]]])
         {
             throw std::logic_error("ParticleExchange: particle " +
-                                   std::to_string(static_cast<long long>(rows[origin[k] * width])) +
+                                   std::to_string(static_cast<long long>(rows[starts[origin[k]]])) +
                                    " is held twice on one rank");
         }
+    }
+    // The ragged fields first, at their new size, so that resizing the registry keeps them.
+    std::vector<std::size_t> raggedAt(count);
+    for (std::size_t k = 0; k < count; ++k)
+    {
+        raggedAt[k] = starts[origin[k]] + width;
+    }
+    for (RaggedArray* array : fields.ragged())
+    {
+        std::vector<std::size_t> entries(count);
+        std::size_t total = 0;
+        for (std::size_t k = 0; k < count; ++k)
+        {
+            entries[k] = static_cast<std::size_t>(rows[raggedAt[k]]);
+            total += entries[k];
+        }
+        std::vector<double> values(total * array->width());
+        double* out = values.data();
+        for (std::size_t k = 0; k < count; ++k)
+        {
+            const double* in = &rows[raggedAt[k] + 1];
+            out = std::copy(in, in + entries[k] * array->width(), out);
+            raggedAt[k] += 1 + entries[k] * array->width();
+        }
+        array->assign(entries, std::move(values));
     }
     fields.resize(count);
     for (std::size_t k = 0; k < count; ++k)
     {
-        const double* value = &rows[origin[k] * width + 1];
+        const double* value = &rows[starts[origin[k]] + 1];
         for (auto& field : fields.all())
         {
             if (field.array->stored())
@@ -220,13 +278,11 @@ void ParticleExchange<D>::addGhosts(ParticleFields<D>& fields,
         appendRow(fields, a, globalId[a], rows);
     }
     std::vector<std::size_t> firstRowOf(ranks + 1, n);
-    const std::size_t widthOfRow = rowWidth(fields);
     for (std::size_t r = 0; r < ranks; ++r)
     {
-        firstRowOf[r] = rows.size() / widthOfRow;
+        firstRowOf[r + 1] = firstRowOf[r] + rowStarts(fields, received[r]).size();
         rows.insert(rows.end(), received[r].begin(), received[r].end());
     }
-    firstRowOf[ranks] = rows.size() / widthOfRow;
     std::vector<std::size_t> origin;
     replaceBy(fields, rows, origin);
 
@@ -397,6 +453,10 @@ void ParticleExchange<D>::keepOnly(ParticleFields<D>& fields, const std::vector<
                 ++kept;
             }
         }
+    }
+    for (RaggedArray* array : fields.ragged())
+    {
+        array->keepOnly(keep);
     }
     kept = static_cast<std::size_t>(std::count_if(keep.begin(), keep.end(),
                                                    [](std::uint8_t k) { return k != 0; }));

@@ -12,7 +12,8 @@
 // What travels is the registry's stored fields (particles/ParticleFields.hpp), so a quantity
 // declared once also migrates and is ghosted without further code: a migrating particle takes
 // every stored field with it; a ghost is created with every stored field and refreshed with the
-// fields the caller names (the ones that changed since). Derived (display) fields are computed
+// fields the caller names (the ones that changed since); a ragged field (gradF's per-sample
+// history) travels with its particle and reaches a ghost when it is created. Derived (display) fields are computed
 // where they are written and never travel. Values travel as doubles: integers (up to 2^53) and
 // doubles arrive with the same bits.
 //
@@ -96,9 +97,13 @@ public:
     std::size_t totalBytesSent() const { return totalBytesSent_; }
 
 private:
-    using Rows = std::vector<double>; // per particle: its global id, then every stored field
+    // Per particle: its global id, every stored field, then each ragged field's entry count
+    // and entries.
+    using Rows = std::vector<double>;
 
+    // The numbers of a row before its ragged fields.
     static std::size_t rowWidth(const ParticleFields<D>& fields);
+    static std::vector<std::size_t> rowStarts(const ParticleFields<D>& fields, const Rows& rows);
     static void appendRow(const ParticleFields<D>& fields, std::size_t a, double globalId,
                           Rows& rows);
     // Replaces the local particles by these rows, in increasing global id; fills `origin` with

@@ -16,6 +16,7 @@
 // last index fastest for a third-order tensor).
 
 #include "core/FieldSpec.hpp"
+#include "particles/RaggedArray.hpp"
 #include "particles/Types.hpp"
 
 #include <deque>
@@ -331,13 +332,33 @@ public:
         add(spec, std::move(array));
     }
 
-    // Sets the particle count of every stored field (new particles get each field's fill).
+    // A per-particle quantity of variable length (particles/RaggedArray.hpp), owned by the
+    // caller: it travels and is restart data like a stored field, but is never displayed.
+    void bindRagged(RaggedArray& array)
+    {
+        for (const RaggedArray* other : ragged_)
+        {
+            if (other->name() == array.name())
+            {
+                throw std::logic_error("ragged particle field '" + array.name() + "' is declared twice");
+            }
+        }
+        ragged_.push_back(&array);
+    }
+    const std::vector<RaggedArray*>& ragged() const { return ragged_; }
+
+    // Sets the particle count of every stored field (new particles get each field's fill, and
+    // no entries of a ragged one).
     void resize(std::size_t n)
     {
         size_ = n;
         for (auto& field : fields_)
         {
             field.array->resize(n);
+        }
+        for (RaggedArray* array : ragged_)
+        {
+            array->resize(n);
         }
     }
     // The particle count declare() sizes new arrays to.
@@ -407,6 +428,7 @@ private:
     std::size_t size_ = 0;
     std::deque<Field> fields_;
     std::vector<Owned> owned_;
+    std::vector<RaggedArray*> ragged_;
 };
 
 } // namespace sph

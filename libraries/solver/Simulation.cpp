@@ -253,6 +253,7 @@ ForceStatus Simulation<D>::computeForces(bool atReference, bool wantEnergy)
     ForceInput<D> in{particles_.x, particles_.V0, particles_.body, particles_.bodies,
                      materials_, reference_->reference(), atReference};
     in.owned = distributed() ? &owned_ : nullptr;
+    in.globalId = distributed() ? &globalId_ : nullptr;
     ForceOutput<D> out{acceleration_, nextF_, nextP_};
     ForceStatus status = scheme_->computeForces(in, out, wantEnergy);
     checkStatus(status, "computing the internal forces");

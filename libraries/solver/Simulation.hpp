@@ -163,7 +163,9 @@ private:
                       double distance) const; // some owned particle, on any rank
     long globalIndex(std::size_t a) const; // the particle's index in the whole set
     std::string distributionReport(long steps) const; // repartitions, ghosts, bytes per step
-    void writePieces(const VtuData& header, double time); // this rank's piece (+ .pvtu on rank 0)
+    // This rank's piece (+ .pvtu on rank 0): its owned particles.
+    void writePieces(const VtuData& header, const std::vector<std::size_t>& ownedParticles,
+                     double time);
 
     // SimulationOutput.cpp
     // Declares every per-particle field and run scalar of the solver itself (the models

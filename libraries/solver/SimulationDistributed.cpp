@@ -38,10 +38,10 @@ void Simulation<D>::checkDistributable() const
         throw InputError(what + " does not run on several ranks yet",
                          {"A distributed run (sphSolid -parallel on more than one rank) supports "
                           "2D and 3D cases with any kernel, formulation and stabilisation, elastic "
-                          "and plastic materials (but gradF's per-sample history), contact between "
-                          "bodies, rigid walls, artificial viscosity, gravity, fixed particles and "
-                          "function objects; run this case serially (or on "
-                          "one rank) until the rest lands (docs/parallel.md)."});
+                          "and plastic materials, contact between bodies, rigid walls, artificial "
+                          "viscosity, gravity, fixed particles and function objects; run this "
+                          "case serially (or on one rank) until the rest lands "
+                          "(docs/parallel.md)."});
     };
     if (D == 1)
     {
@@ -57,11 +57,6 @@ void Simulation<D>::checkDistributable() const
         {
             refuse("function object '" + object->name() + "' (" + object->summary() + ")");
         }
-    }
-    if (historyMaterials_ && scheme_->keepsPairHistory())
-    {
-        refuse("gradF's per-sample plastic history (plasticSamples ownHistory, the default; "
-               "gradF with plasticSamples linearised runs distributed)");
     }
 }
 
@@ -186,7 +181,8 @@ int Simulation<D>::wordingRank(long badParticle) const
 // VTK/<case>_<n>.pvtu, which names them, and adds it to the series. A failed write on any rank
 // stops every rank with that rank's I/O error (nothing damaged replaces a good file).
 template <int D>
-void Simulation<D>::writePieces(const VtuData& header, double time)
+void Simulation<D>::writePieces(const VtuData& header, const std::vector<std::size_t>& ownedParticles,
+                                double time)
 {
     const std::string stem = caseName_ + "_" + std::to_string(outputIndex_);
     const std::filesystem::path folder = dicts_.caseDir() / "VTK";
@@ -194,14 +190,6 @@ void Simulation<D>::writePieces(const VtuData& header, double time)
     for (int r = 0; r < comm_.size(); ++r)
     {
         pieces.push_back(stem + "/" + stem + "_" + std::to_string(r) + ".vtu");
-    }
-    std::vector<std::size_t> ownedParticles;
-    for (std::size_t a = 0; a < owned_.size(); ++a)
-    {
-        if (owned_[a])
-        {
-            ownedParticles.push_back(a);
-        }
     }
     const VtuPieceFill fill = [&](std::size_t begin, std::size_t end, VtuData& piece) {
         writeStatePoints<D>(fields_, &ownedParticles, begin, end, piece);

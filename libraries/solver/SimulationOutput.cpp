@@ -189,7 +189,7 @@ void Simulation<D>::declareFields()
     if (historyMaterials_)
     {
         audit_.declareDissipation(runScalars_);
-        scheme_->declareHistory(materials_, runScalars_);
+        scheme_->declareHistory(materials_, fields_);
     }
     if (comm_.parallel())
     {
@@ -220,8 +220,18 @@ void Simulation<D>::writeOutput(const LevelView& level, const FunctionState& fun
         ~RestoreWrittenX() { written = current; }
     } restore{writtenX_, &particles_.x};
     writtenX_ = level.x;
+    // A distributed run writes its owned particles.
+    std::vector<std::size_t> ownedParticles;
+    for (std::size_t a = 0; distributed() && a < owned_.size(); ++a)
+    {
+        if (owned_[a])
+        {
+            ownedParticles.push_back(a);
+        }
+    }
     VtuData header;
-    writeStateHeader<D>(fields_, runScalars_, level.time, header);
+    writeStateHeader<D>(fields_, runScalars_, level.time, header,
+                        distributed() ? &ownedParticles : nullptr);
     // What identifies the output itself (the level it holds, whether a restart may use it).
     const auto number = [](double value) { return VtuArray{1, {value}, false, {}, {}}; };
     header.fieldData[std::string(restartPrefix) + "step"] = number(static_cast<double>(level.step));
@@ -235,7 +245,7 @@ void Simulation<D>::writeOutput(const LevelView& level, const FunctionState& fun
 
     if (distributed())
     {
-        writePieces(header, level.time);
+        writePieces(header, ownedParticles, level.time);
     }
     else
     {

@@ -92,8 +92,10 @@ void checkScalar(const VtuChecks& checks, const RunScalars::Scalar& scalar, cons
 }
 
 // The time and every other restart number (time-step state, function-object state) are used
-// as they are: one finite value each; a run array may hold any number of finite values.
-void checkRestartFieldData(const VtuChecks& checks, const VtuData& data, const RunScalars& scalars)
+// as they are: one finite value each; a run array, or a ragged particle field's entries, may
+// hold any number of finite values.
+void checkRestartFieldData(const VtuChecks& checks, const VtuData& data, const RunScalars& scalars,
+                           const std::vector<std::string>& raggedNames)
 {
     checks.fieldArray("TimeValue", 1);
     for (const auto& [name, array] : data.fieldData)
@@ -104,7 +106,8 @@ void checkRestartFieldData(const VtuChecks& checks, const VtuData& data, const R
         }
         const bool runArray =
             std::any_of(scalars.arrays().begin(), scalars.arrays().end(),
-                        [&](const RunScalars::Array& a) { return restartPrefix + a.name == name; });
+                        [&](const RunScalars::Array& a) { return restartPrefix + a.name == name; }) ||
+            std::find(raggedNames.begin(), raggedNames.end(), name) != raggedNames.end();
         checks.fieldArray(name, runArray ? 0 : 1);
     }
     // The solver's step counter (written with the output) becomes a long.
@@ -115,11 +118,38 @@ void checkRestartFieldData(const VtuChecks& checks, const VtuData& data, const R
     }
 }
 
+// A ragged particle field: each particle's entry count (point data), then the entries of all
+// of them, one particle after another (field data, one tuple per entry).
+void readRagged(const VtuChecks& checks, RaggedArray& ragged, std::size_t n)
+{
+    const std::string countName = restartPrefix + ragged.name() + raggedCountSuffix;
+    const VtuArray& countArray = checks.pointArray(countName, 1);
+    checks.wholeNumbers(countName, countArray, 0, 1e9, "a number of entries");
+    std::vector<std::size_t> counts(n);
+    std::size_t total = 0;
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        counts[a] = static_cast<std::size_t>(countArray.values[a]);
+        total += counts[a];
+    }
+    const std::string name = restartPrefix + ragged.name();
+    const VtuArray& entries = checks.fieldArray(name, 0);
+    if (entries.values.size() != total * ragged.width() ||
+        (total > 0 && entries.components != static_cast<int>(ragged.width())))
+    {
+        checks.fail("its field data '" + name + "' holds " + std::to_string(entries.values.size()) +
+                    " values in tuples of " + std::to_string(entries.components) + ", not " +
+                    std::to_string(total) + " entries of " + std::to_string(ragged.width()) +
+                    " as its point array '" + countName + "' says");
+    }
+    ragged.assign(counts, entries.values);
+}
+
 } // namespace
 
 template <int D>
 void writeStateHeader(const ParticleFields<D>& fields, const RunScalars& scalars, double time,
-                      VtuData& header)
+                      VtuData& header, const std::vector<std::size_t>* selection)
 {
     for (const auto& field : fields.all())
     {
@@ -147,6 +177,20 @@ void writeStateHeader(const ParticleFields<D>& fields, const RunScalars& scalars
     {
         header.fieldData[restartPrefix + array.name] = VtuArray{1, *array.values, false, {}, {}};
     }
+    // The entries of the written particles, in their order (their counts are point data).
+    for (const RaggedArray* ragged : fields.ragged())
+    {
+        const std::size_t n = selection ? selection->size() : fields.size();
+        VtuArray entries{static_cast<int>(ragged->width()), {}, false, {}, {}};
+        for (std::size_t k = 0; k < n; ++k)
+        {
+            const std::size_t a = selection ? (*selection)[k] : k;
+            const std::size_t count = ragged->entries(a) * ragged->width();
+            entries.values.resize(entries.values.size() + count);
+            ragged->get(a, entries.values.data() + entries.values.size() - count);
+        }
+        header.fieldData[restartPrefix + ragged->name()] = std::move(entries);
+    }
 }
 
 template <int D>
@@ -173,6 +217,15 @@ void writeStatePoints(const ParticleFields<D>& fields, const std::vector<std::si
         }
         piece.pointData[spec.fileName()] = arrayOf<D>(field, selection, begin, end);
     }
+    for (const RaggedArray* ragged : fields.ragged())
+    {
+        VtuArray counts{1, std::vector<double>(end - begin), true, {}, {}};
+        for (std::size_t k = begin; k < end; ++k)
+        {
+            counts.values[k - begin] = static_cast<double>(ragged->entries(selection ? (*selection)[k] : k));
+        }
+        piece.pointData[restartPrefix + ragged->name() + raggedCountSuffix] = std::move(counts);
+    }
 }
 
 template <int D>
@@ -194,7 +247,12 @@ void readState(const VtuData& data, ParticleFields<D>& fields, const RunScalars&
                                      " particles, the case " + std::to_string(n));
     }
     const VtuChecks checks(data, "cannot restart from '" + file + "'", restartHint);
-    checkRestartFieldData(checks, data, scalars);
+    std::vector<std::string> raggedNames;
+    for (const RaggedArray* ragged : fields.ragged())
+    {
+        raggedNames.push_back(restartPrefix + ragged->name());
+    }
+    checkRestartFieldData(checks, data, scalars, raggedNames);
     for (auto& field : fields.all())
     {
         const FieldSpec& spec = field.spec;
@@ -234,6 +292,10 @@ void readState(const VtuData& data, ParticleFields<D>& fields, const RunScalars&
             field.array->set(a, value.data());
         }
     }
+    for (RaggedArray* ragged : fields.ragged())
+    {
+        readRagged(checks, *ragged, n);
+    }
     for (const auto& scalar : scalars.all())
     {
         const VtuArray& array = checks.fieldArray(restartPrefix + scalar.name, 1);
@@ -253,7 +315,8 @@ void readState(const VtuData& data, ParticleFields<D>& fields, const RunScalars&
 }
 
 #define SPH_STATE_FILE_WRITERS(D)                                                                  \
-    template void writeStateHeader<D>(const ParticleFields<D>&, const RunScalars&, double, VtuData&); \
+    template void writeStateHeader<D>(const ParticleFields<D>&, const RunScalars&, double, VtuData&, \
+                                      const std::vector<std::size_t>*);                              \
     template void writeStatePoints<D>(const ParticleFields<D>&, const std::vector<std::size_t>*,     \
                                       std::size_t, std::size_t, VtuData&);
 SPH_STATE_FILE_WRITERS(1)

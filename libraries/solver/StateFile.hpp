@@ -10,6 +10,11 @@
 //                           D×D×D components in double precision
 //   field data              "TimeValue" (ParaView's time) and every run scalar and run
 //                           array as "restart:<name>"
+//   ragged particle fields  (particles/RaggedArray.hpp) each particle's entry count as the
+//                           point array "restart:<name>Count", the entries of the written
+//                           particles in their order as the field data "restart:<name>"
+//                           (one tuple per entry; io/PvtuFile joins a distributed run's
+//                           pieces' entries in the points' order)
 //
 // Reading puts back every restart field (from its display array when it is also displayed:
 // the padding is exact) and every run scalar; anything missing or of another shape is an
@@ -29,11 +34,12 @@ namespace sph
 // The name of the field written as the points.
 inline constexpr const char* positionField = "position";
 
-// Everything but the points: the field data (time, run scalars and arrays) and the active
-// arrays.
+// Everything but the points: the field data (time, run scalars and arrays, the ragged
+// fields' entries of the written particles: every particle, or those of `selection`) and the
+// active arrays.
 template <int D>
 void writeStateHeader(const ParticleFields<D>& fields, const RunScalars& scalars, double time,
-                      VtuData& header);
+                      VtuData& header, const std::vector<std::size_t>* selection = nullptr);
 
 // The written points [begin, end) and their point arrays: written point k is particle k, or
 // particle (*selection)[k] (a distributed run writes its owned particles only). With

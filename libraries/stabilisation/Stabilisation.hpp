@@ -12,7 +12,6 @@
 // not depend on the number of threads.
 
 #include "core/Registry.hpp"
-#include "core/RunScalars.hpp"
 #include "kernels/Kernel.hpp"
 #include "materials/Material.hpp"
 #include "particles/Parallel.hpp"
@@ -42,6 +41,9 @@ struct ForceInput
     // strain energy and the failure checks: a ghost's neighbourhood is cut at the edge of the
     // ghost layer, and its owner checks it. Null: every particle counts (a serial run).
     const std::vector<std::uint8_t>* owned = nullptr;
+    // A distributed run's global index of each local particle (null: the index), for what a
+    // scheme keeps by particle across changes of the local particles (gradF's sample history).
+    const std::vector<int>* globalId = nullptr;
     bool counts(std::size_t a) const { return !owned || (*owned)[a] != 0; }
 };
 
@@ -202,19 +204,17 @@ public:
     virtual double energy(const ForceInput<D>& in) = 0;
 
     // Materials with history (docs/theory/plasticity.md §P7). A scheme that keeps history of
-    // its own declares its restart state here (called once, when some material has history)...
+    // its own declares it here as particle fields (called once, when some material has
+    // history), so that it is restart data and moves with its particles between ranks...
     virtual void declareHistory(const std::vector<const Material<D>*>& materials,
-                                RunScalars& scalars)
+                                ParticleFields<D>& fields)
     {
         (void)materials;
-        (void)scalars;
+        (void)fields;
     }
     // ...and commits the history at the state of the last force evaluation, once per accepted
     // level, returning the dissipated energy. By default each particle at its own F.
     virtual double commitHistory(const HistoryCommit<D>& in) { return commitParticleHistory(in); }
-    // Whether it keeps a history of its own along the neighbour lists (gradF's per-sample
-    // states), which a distributed run cannot yet move with its particles.
-    virtual bool keepsPairHistory() const { return false; }
 };
 
 } // namespace sph

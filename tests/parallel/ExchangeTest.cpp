@@ -1,7 +1,8 @@
 // Particles between ranks (libraries/parallel/ParticleExchange): every stored field of the
-// registry migrates and is ghosted with the same bits, and the property the bit-identical
-// distributed run rests on: on every rank, the neighbour list of each owned particle, read as
-// global ids, is the serial run's list, term for term and in the same order.
+// registry, and a ragged one (a variable number of entries per particle), migrates and is
+// ghosted with the same bits, and the property the bit-identical distributed run rests on: on
+// every rank, the neighbour list of each owned particle, read as global ids, is the serial
+// run's list, term for term and in the same order.
 #include "parallel/Communicator.hpp"
 #include "parallel/ParticleExchange.hpp"
 #include "parallel/RcbPartition.hpp"
@@ -41,6 +42,19 @@ Mat<2> gradientOf(int g, double version)
     return F;
 }
 
+// Particle g's entries of a per-particle quantity of variable length: g % 5 entries (none
+// for some), 2 numbers each.
+std::vector<double> entriesOf(int g)
+{
+    std::vector<double> values;
+    for (int e = 0; e < g % 5; ++e)
+    {
+        values.push_back(g + 0.25 * e);
+        values.push_back(std::sqrt(g + 0.1 * e));
+    }
+    return values;
+}
+
 // A registry like the solver's: bound arrays of several kinds and C++ types.
 struct LocalParticles
 {
@@ -51,9 +65,11 @@ struct LocalParticles
     std::vector<Mat<2>> F;
     std::vector<Tensor3<2>> G;
     std::vector<std::uint8_t> yielding;
+    RaggedVectors entries{"entries", 2};
 
     LocalParticles()
     {
+        fields.bindRagged(entries);
         fields.bind(FieldSpec::integer("globalId", "global id").restart(), id);
         fields.bind(FieldSpec::vector("position", "x").restart().display(), x);
         fields.bind(FieldSpec::integer("bodyId", "body").restart(), body);
@@ -74,6 +90,7 @@ struct LocalParticles
         t(1, 0, 1) = 0.5 * g;
         G.push_back(t);
         yielding.push_back(static_cast<std::uint8_t>(g % 2));
+        entries.values.push_back(entriesOf(g));
         fields.setSize(id.size());
     }
 };
@@ -95,7 +112,9 @@ void checkValues(const LocalParticles& p, double shift, double version)
         REQUIRE(p.F[a] == gradientOf(g, version));
         REQUIRE(p.G[a](1, 0, 1) == 0.5 * g);
         REQUIRE(p.yielding[a] == g % 2);
+        REQUIRE(p.entries.values[a] == entriesOf(g));
     }
+    REQUIRE(p.entries.size() == p.id.size());
 }
 
 // The neighbour list of every owned particle, as global ids, equals the serial run's.

@@ -151,32 +151,52 @@ foreach(ranks 2 3)
 endforeach()
 
 # Plastic materials: the impact tutorial as it is (a j2Plasticity copper bar, TL none) on 2 and
-# 3 ranks; UL gradF with plasticSamples linearised on 2. Each particle's plastic history is a
-# registry field, so it travels with the particle; every rank commits its ghosts too (their
+# 3 ranks; UL gradF with its per-sample history (plasticSamples ownHistory, the default) on 2
+# and 3 (to 15 us: UL gradF fails at the wall at 19 us, serially as distributed), and with
+# plasticSamples linearised on 2. Each particle's plastic history is a registry
+# field, and gradF's samples a ragged one (a state per neighbour pair, keyed by the neighbour's
+# global id), so both travel with their particle; every rank commits its ghosts too (their
 # stress is read in the next force evaluation), and only owned particles count in the
-# dissipated energy. gradF's per-sample history (ownHistory) is refused, once.
+# dissipated energy.
 set(sphImpact ${CMAKE_SOURCE_DIR}/tutorials/plasticity2D/impact)
+set(sphImpactUL -set formulation.type=updatedLagrangian -set stabilisation.type=gradF)
 foreach(ranks 2 3)
     sph_add_solver_run("plastic impact bit-identical on ${ranks} ranks" ${ranks} ${sphImpact}
                        bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5)
-    set_property(TEST "parallel:sphSolid plastic impact bit-identical on ${ranks} ranks"
-                 APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy wall")
+    sph_add_solver_run("plastic impact UL gradF per-sample history bit-identical on ${ranks} ranks"
+                       ${ranks} ${sphImpact} bitIdentical -threads 1 -set endTime=1.5e-5
+                       -set writeInterval=5e-6 ${sphImpactUL})
 endforeach()
 sph_add_solver_run("plastic impact UL gradF linearised bit-identical on 2 ranks" 2 ${sphImpact}
                    bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
-                   -set formulation.type=updatedLagrangian -set stabilisation.type=gradF
-                   -set stabilisation.plasticSamples=linearised)
-set_property(TEST "parallel:sphSolid plastic impact UL gradF linearised bit-identical on 2 ranks"
-             APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy wall")
-sph_add_solver_run("refuses gradF's per-sample plastic history on 2 ranks" 2 ${sphImpact} refused
-                   -set stabilisation.type=gradF)
-# A geomaterial: the column collapse tutorial (druckerPrager sand under gravity between walls,
-# every function object of the tutorial: surface profiles, snapshots of plasticStrain) with
-# gradF's linearised samples, on 2 ranks.
+                   ${sphImpactUL} -set stabilisation.plasticSamples=linearised)
+# The samples' states travel through the output's pieces: written on 2 ranks, continued on 3
+# and serially.
+foreach(second 3 1)
+    sph_add_solver_run("plastic impact UL gradF restart from 2 on ${second} ranks bit-identical" 2
+                       ${sphImpact} restartOn:${second}:1e-5 -threads 1 -set endTime=1.5e-5
+                       -set writeInterval=5e-6 ${sphImpactUL})
+endforeach()
+foreach(test "plastic impact bit-identical on 2 ranks" "plastic impact bit-identical on 3 ranks"
+             "plastic impact UL gradF per-sample history bit-identical on 2 ranks"
+             "plastic impact UL gradF per-sample history bit-identical on 3 ranks"
+             "plastic impact UL gradF linearised bit-identical on 2 ranks"
+             "plastic impact UL gradF restart from 2 on 3 ranks bit-identical"
+             "plastic impact UL gradF restart from 2 on 1 ranks bit-identical")
+    set_property(TEST "parallel:sphSolid ${test}" APPEND PROPERTY ENVIRONMENT
+                 "SPH_ROUNDOFF_TABLES=energy wall")
+endforeach()
+# In 3D: the Taylor bar (copper, yielding from the first step) with UL gradF's samples.
+sph_add_solver_run("Taylor bar UL gradF per-sample history bit-identical on 2 ranks" 2
+                   ${CMAKE_SOURCE_DIR}/tutorials/plasticity3D/taylorBar bitIdentical -threads 1
+                   -set endTime=4e-6 -set writeInterval=2e-6 -set functions={}
+                   -set formulation.type=updatedLagrangian -set stabilisation.type=gradF)
+# A geomaterial: the column collapse tutorial as it is (druckerPrager sand under gravity
+# between walls, gradF's per-sample history, every function object of the tutorial: surface
+# profiles, snapshots of plasticStrain), on 2 ranks.
 sph_add_solver_run("geomaterial column collapse bit-identical on 2 ranks" 2
                    ${CMAKE_SOURCE_DIR}/tutorials/geomaterials/columnCollapse bitIdentical -threads 1
                    -set endTime=0.02 -set writeInterval=0.01
-                   -set stabilisation.plasticSamples=linearised
                    -set functions.surface.writeInterval=0.01 -set functions.particles.writeInterval=0.01)
 set_property(TEST "parallel:sphSolid geomaterial column collapse bit-identical on 2 ranks"
              APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy walls")

@@ -243,7 +243,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
     selfTerm_.resize(n);
     const std::vector<ParticleChunk>& chunks = chunkCache_.of(in.bodies);
     const bool carriesK = !ref.K.empty();
-    samples_.follow(list, in.body, in.materials);
+    samples_.follow(list, in.body, in.materials, in.globalId);
     sampleDissipation_.resize(n);
     std::vector<ChunkTally> tallies(chunks.size());
 #pragma omp parallel if (useThreads(n))
@@ -355,7 +355,7 @@ double GradF<D>::energy(const ForceInput<D>& in)
 {
     const ReferenceConfiguration<D>& ref = in.ref;
     const NeighbourList& list = ref.neighbours;
-    samples_.follow(list, in.body, in.materials);
+    samples_.follow(list, in.body, in.materials, in.globalId);
     double total = 0.0;
     Scratch scratch; // one for all particles; kinematics() fills x^r_ba and Ŵ_ab
     scratch.resize(maxNeighbours_);

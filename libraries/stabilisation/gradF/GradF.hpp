@@ -53,15 +53,14 @@ public:
                               bool wantEnergy) override;
     double energy(const ForceInput<D>& in) override;
     void declareHistory(const std::vector<const Material<D>*>& materials,
-                        RunScalars& scalars) override
+                        ParticleFields<D>& fields) override
     {
         if (!linearised_)
         {
-            samples_.declare(materials, scalars);
+            samples_.declare(materials, fields);
         }
     }
     double commitHistory(const HistoryCommit<D>& in) override;
-    bool keepsPairHistory() const override { return !linearised_; }
 
     // Kinematics of particle a at positions x: f_a, F_a = f_a F^r_a and G_a (public for tests).
     struct Kinematics

@@ -82,7 +82,10 @@ double GradF<D>::commitHistory(const HistoryCommit<D>& in)
         {
             for (std::size_t a = in.bodies[b].begin; a < in.bodies[b].end; ++a)
             {
-                total += sampleDissipation_[a];
+                if (!in.owned || (*in.owned)[a])
+                {
+                    total += sampleDissipation_[a]; // a ghost's counts on its own rank
+                }
             }
         }
     }

@@ -5,17 +5,24 @@
 // commit lowers the scheme's energy by exactly the sampled dissipation.
 //
 // The states lie along the reference neighbour list (slot k of the list holds the sample of
-// the pair it names), packed as the material packs them (Material::packHistory). A commit
-// takes the states the last force evaluation computed (`next`). When the list changes (the
-// updated-Lagrangian reference is rebuilt), follow() moves each state to the pair's new slot;
-// a pair that is new starts from its owner's committed particle state (= its own sample a–a).
-// The states and the layout they lie along are restart arrays, so a restart remaps them onto
-// the list it rebuilds (the same list: the remap is then a copy).
+// the pair it names), packed as the material packs them (Material::packHistory), each with the
+// global index of the neighbour it samples. A commit takes the states the last force
+// evaluation computed (`next`). When the list changes (the updated-Lagrangian reference is
+// rebuilt, or a distributed run's local particles change), follow() moves each state to the
+// pair's new slot by the neighbour's global index; a pair that is new starts from its owner's
+// committed particle state (= its own sample a–a).
+//
+// To the field registry the states are a ragged particle field (particles/RaggedArray.hpp):
+// particle a's entries are its samples, each [neighbour's global index, state]. So they move
+// with their particle between ranks (a ghost gets its owner's states when it is gathered, and
+// commits them itself, as it does its particle history), and they are restart data; a
+// restart, or an exchange, leaves them in particle order, and follow() lays them out along the
+// list again.
 
-#include "core/RunScalars.hpp"
 #include "materials/Material.hpp"
 #include "particles/NeighbourList.hpp"
 #include "particles/Parallel.hpp"
+#include "particles/ParticleFields.hpp"
 
 #include <algorithm>
 #include <vector>
@@ -24,11 +31,11 @@ namespace sph
 {
 
 template <int D>
-class SampleHistory
+class SampleHistory final : public RaggedArray
 {
 public:
     // Active when some material has history: numbers per state = the largest of them.
-    void declare(const std::vector<const Material<D>*>& materials, RunScalars& scalars)
+    void declare(const std::vector<const Material<D>*>& materials, ParticleFields<D>& fields)
     {
         for (const Material<D>* material : materials)
         {
@@ -36,9 +43,8 @@ public:
         }
         if (stride_ > 0)
         {
-            scalars.bindArray("sampleHistory", states_);
-            scalars.bindArray("sampleHistoryOffsets", offsets_);
-            scalars.bindArray("sampleHistoryNeighbours", neighbours_);
+            assign(std::vector<std::size_t>(fields.size(), 0), {});
+            fields.bindRagged(*this);
         }
     }
     bool active() const { return stride_ > 0; }
@@ -47,18 +53,24 @@ public:
     // The reference neighbour list was rebuilt: follow() it before the next evaluation.
     void listChanged() { current_ = false; }
 
-    // Lays the states out along `list` (a no-op while it has not changed).
+    // Lays the states out along `list` (a no-op while it has not changed). globalId: each
+    // local particle's global index (null: its index).
     void follow(const NeighbourList& list, const std::vector<int>& body,
-                const std::vector<const Material<D>*>& materials)
+                const std::vector<const Material<D>*>& materials, const std::vector<int>* globalId)
     {
         if (current_ || !active())
         {
             return;
         }
         const std::size_t n = list.particleCount();
-        const bool hadLayout = offsets_.size() == n + 1 &&
-                               static_cast<std::size_t>(offsets_[n]) == neighbours_.size() &&
-                               neighbours_.size() * stride_ == states_.size();
+        if (offsets_.size() != n + 1)
+        {
+            throw std::logic_error("SampleHistory: the states are of " + std::to_string(size()) +
+                                   " particles, the list of " + std::to_string(n));
+        }
+        const auto global = [globalId](std::size_t b) {
+            return globalId ? static_cast<double>((*globalId)[b]) : static_cast<double>(b);
+        };
         // Into a buffer kept between moves (no allocation, no page faults once grown: the
         // reference moves every step). Slots of bodies without history are never read.
         resizePairArray(remapped_, list.pairCount() * stride_);
@@ -74,12 +86,13 @@ public:
                     continue;
                 }
                 material->packHistory(a, owner.data());
-                std::size_t old = hadLayout ? static_cast<std::size_t>(offsets_[a]) : 0;
-                const std::size_t oldEnd = hadLayout ? static_cast<std::size_t>(offsets_[a + 1]) : 0;
+                std::size_t old = offsets_[a];
+                const std::size_t oldEnd = offsets_[a + 1];
                 for (std::size_t k = list.begin(a); k < list.end(a); ++k)
                 {
-                    // Both lists: a itself first, then its neighbours in increasing index order.
-                    const double b = list.indices[k];
+                    // Both: a itself first, then its neighbours in increasing global index
+                    // (local particles are in increasing global index).
+                    const double b = global(list.indices[k]);
                     const bool self = k == list.begin(a);
                     while (!self && old < oldEnd && (old == offsets_[a] || neighbours_[old] < b))
                     {
@@ -94,7 +107,11 @@ public:
         states_.swap(remapped_);
         resizePairArray(next_, states_.size()); // every slot of a history body is written before a commit
         offsets_.assign(list.offsets.begin(), list.offsets.end());
-        neighbours_.assign(list.indices.begin(), list.indices.end());
+        neighbours_.resize(list.indices.size());
+        for (std::size_t k = 0; k < neighbours_.size(); ++k)
+        {
+            neighbours_[k] = global(list.indices[k]);
+        }
         current_ = true;
     }
 
@@ -106,14 +123,53 @@ public:
     // The states of the last evaluation become the committed ones.
     void commit() { states_.swap(next_); }
 
+    // The ragged field: particle a's samples, each [neighbour's global index, state].
+    const std::string& name() const override { return name_; }
+    std::size_t width() const override { return 1 + stride_; }
+    std::size_t size() const override { return offsets_.empty() ? 0 : offsets_.size() - 1; }
+    std::size_t entries(std::size_t a) const override { return offsets_[a + 1] - offsets_[a]; }
+    void get(std::size_t a, double* out) const override
+    {
+        for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k)
+        {
+            *out++ = neighbours_[k];
+            out = std::copy(&states_[k * stride_], &states_[(k + 1) * stride_], out);
+        }
+    }
+    void assign(const std::vector<std::size_t>& counts, std::vector<double> values) override
+    {
+        offsets_.assign(counts.size() + 1, 0);
+        for (std::size_t a = 0; a < counts.size(); ++a)
+        {
+            offsets_[a + 1] = offsets_[a] + counts[a];
+        }
+        const std::size_t pairs = offsets_.back();
+        if (values.size() != pairs * width())
+        {
+            throw std::logic_error("SampleHistory: " + std::to_string(values.size()) +
+                                   " numbers for " + std::to_string(pairs) + " samples");
+        }
+        neighbours_.resize(pairs);
+        states_.resize(pairs * stride_);
+        for (std::size_t k = 0; k < pairs; ++k)
+        {
+            const double* in = &values[k * width()];
+            neighbours_[k] = in[0];
+            std::copy(in + 1, in + width(), &states_[k * stride_]);
+        }
+        current_ = false;
+    }
+
 private:
+    std::string name_ = "sampleHistory";
     std::size_t stride_ = 0;
     bool current_ = false;
     std::vector<double> states_;
     std::vector<double> next_;
     std::vector<double> remapped_; // follow()'s buffer
-    // The list the states lie along (doubles: a restart array; indices < 2^32 are exact).
-    std::vector<double> offsets_;
+    // The samples of particle a are slots offsets_[a] .. offsets_[a + 1]: a itself first, then
+    // its neighbours, by global index (a double: exact below 2^53).
+    std::vector<std::size_t> offsets_;
     std::vector<double> neighbours_;
 };
 

@@ -138,7 +138,6 @@ template <int D>
 struct SchemeFixture
 {
     ParticleFields<D> fields; // a material's history (plastic models), one entry per point
-    RunScalars scalars;       // a scheme's restart arrays (gradF's per-sample history)
     std::unique_ptr<Kernel> kernel;
     std::unique_ptr<Material<D>> material;
     std::unique_ptr<Stabilisation<D>> scheme;
@@ -197,7 +196,7 @@ struct SchemeFixture
         }
         if (material->hasHistory())
         {
-            scheme->declareHistory(materials, scalars);
+            scheme->declareHistory(materials, fields);
         }
     }
 

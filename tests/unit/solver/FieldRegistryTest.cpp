@@ -1,6 +1,7 @@
 // The per-particle field registry (particles/ParticleFields.hpp) and the state file written
 // from it (solver/StateFile.hpp): declarations, the file layout ParaView sees, and an exact
 // round trip of every kind of restart field in 1D, 2D and 3D.
+#include "io/PvtuFile.hpp"
 #include "io/VtuFile.hpp"
 #include "solver/StateFile.hpp"
 #include "support/TestSupport.hpp"
@@ -245,4 +246,103 @@ TEST_CASE("the state file restores every kind of restart field exactly", "[field
     roundTrip<1>(dir.path() / "one.vtu");
     roundTrip<2>(dir.path() / "two.vtu");
     roundTrip<3>(dir.path() / "three.vtu");
+}
+
+// A ragged field (a variable number of entries per particle: gradF's per-sample history):
+// its counts are point data, its entries field data in the written particles' order; a
+// distributed run's pieces are joined back in global order with each particle's entries.
+TEST_CASE("the state file restores a ragged field whole and from the pieces of a distributed run",
+          "[fields]")
+{
+    constexpr std::size_t n = 7;
+    const auto entriesOf = [](std::size_t g) {
+        std::vector<double> values;
+        for (std::size_t e = 0; e < g % 4; ++e) // particles 0 and 4 have none
+        {
+            values.insert(values.end(), {static_cast<double>(g), 0.1 * e, std::sqrt(g + 0.3 * e)});
+        }
+        return values;
+    };
+    struct Particles
+    {
+        ParticleFields<2> fields;
+        std::vector<Vec<2>> x;
+        std::vector<int> id;
+        RaggedVectors samples{"samples", 3};
+        explicit Particles(std::size_t count) : x(count, Vec<2>::Zero()), id(count, 0)
+        {
+            fields.bind(FieldSpec::vector(positionField, "x").restart().display(), x);
+            fields.bind(FieldSpec::integer("globalId", "id").restart().display(), id);
+            fields.setSize(count);
+            fields.bindRagged(samples);
+            samples.values.resize(count);
+        }
+    };
+    Particles written(n);
+    for (std::size_t g = 0; g < n; ++g)
+    {
+        written.x[g] = Vec<2>(0.5 * g, -1.0 * g);
+        written.id[g] = static_cast<int>(g);
+        written.samples.values[g] = entriesOf(g);
+    }
+    RunScalars scalars;
+    test::TempDir dir;
+    const auto check = [&](const VtuData& data, const std::string& file) {
+        Particles back(n);
+        readState<2>(data, back.fields, scalars, file);
+        CHECK(back.x == written.x);
+        CHECK(back.samples.values == written.samples.values);
+    };
+
+    SECTION("one file")
+    {
+        VtuData data;
+        writeState<2>(written.fields, scalars, 0.0, data);
+        CHECK(data.pointData.at("restart:samplesCount").values ==
+              std::vector<double>{0, 1, 2, 3, 0, 1, 2});
+        CHECK(data.fieldData.at("restart:samples").components == 3);
+        writeVtu(dir.path() / "whole.vtu", data);
+        const VtuData read = readVtu(dir.path() / "whole.vtu");
+        check(read, "whole.vtu");
+
+        VtuData miscounted = read;
+        miscounted.pointData.at("restart:samplesCount").values[2] = 3.0;
+        Particles back(n);
+        CHECK_THROWS_WITH(readState<2>(miscounted, back.fields, scalars, "bad.vtu"),
+                          Catch::Contains("cannot restart from 'bad.vtu'") &&
+                              Catch::Contains("'restart:samples' holds 27 values") &&
+                              Catch::Contains("not 10 entries of 3"));
+        VtuData negative = read;
+        negative.pointData.at("restart:samplesCount").values[1] = -1.0;
+        CHECK_THROWS_WITH(readState<2>(negative, back.fields, scalars, "bad.vtu"),
+                          Catch::Contains("restart:samplesCount"));
+    }
+
+    SECTION("pieces of a distributed run")
+    {
+        // Rank 0 owned particles 1, 4, 5; rank 1 particles 0, 2, 3, 6 (each in increasing id).
+        const std::vector<std::vector<std::size_t>> owned{{1, 4, 5}, {0, 2, 3, 6}};
+        std::filesystem::create_directories(dir.path() / "run_0");
+        std::vector<std::string> pieces;
+        VtuData layout;
+        for (std::size_t r = 0; r < owned.size(); ++r)
+        {
+            VtuData piece;
+            writeStateHeader<2>(written.fields, scalars, 0.0, piece, &owned[r]);
+            writeStatePoints<2>(written.fields, &owned[r], 0, owned[r].size(), piece);
+            pieces.push_back("run_0/run_0_" + std::to_string(r) + ".vtu");
+            writeVtu(dir.path() / pieces.back(), piece);
+            layout = piece;
+        }
+        writePvtu(dir.path() / "run_0.pvtu", layout, pieces);
+        const VtuData joined = readPvtu(dir.path() / "run_0.pvtu", "globalId");
+        check(joined, "run_0.pvtu");
+
+        // A piece whose entries do not match its counts.
+        VtuData damaged = readVtu(dir.path() / pieces[1]);
+        damaged.fieldData.at("restart:samples").values.resize(3);
+        writeVtu(dir.path() / pieces[1], damaged);
+        CHECK_THROWS_WITH(readPvtu(dir.path() / "run_0.pvtu", "globalId"),
+                          Catch::Contains("cannot read") && Catch::Contains("'restart:samples'"));
+    }
 }
