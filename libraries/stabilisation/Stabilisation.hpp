@@ -185,7 +185,9 @@ public:
     virtual ForceStatus prepare(const ReferenceConfiguration<D>& ref) = 0;
 
     // F = f F^r at positions x (for moving the reference configuration to x). Schemes that
-    // carry K also return the new K = G f^{-1} (spec §6.5) in newK.
+    // carry K also return the new K = G f^{-1} (spec §6.5) in newK. F and newK may be the
+    // reference's own F^r and K (the move updates them in place): F_a and K_a may be computed
+    // from particle a's own F^r_a and K_a only, never from a neighbour's.
     virtual ForceStatus referenceUpdate(const std::vector<Vec<D>>& x,
                                         const ReferenceConfiguration<D>& ref,
                                         std::vector<Mat<D>>& F,

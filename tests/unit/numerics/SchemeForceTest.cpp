@@ -211,6 +211,36 @@ void checkParticleDeformationGradient(const std::string& name, bool updated)
     }
 }
 
+// A move of the reference configuration updates F^r and K in place (formulations/
+// ReferenceManager.hpp): the new F_a and K_a read only particle a's own, so the result is the
+// one computed into separate arrays, bit for bit.
+template <int D>
+void checkInPlaceMove(const std::string& name, bool updated)
+{
+    INFO(name << (updated ? " UL" : " TL") << " " << D << "D, reference moved in place");
+    test::SchemeFixture<D> fixture(test::schemeCloud<D>(), test::schemeText<D>(name), kMaterial, updated, test::schemeHOverDx<D>());
+    const auto x = test::deformCurrent<D>(fixture.ref.x, 5);
+    const bool carriesK = !fixture.ref.K.empty();
+    std::vector<Mat<D>> F;
+    std::vector<Tensor3<D>> K;
+    REQUIRE(fixture.scheme->referenceUpdate(x, fixture.ref, F, carriesK ? &K : nullptr).ok());
+    REQUIRE(fixture.scheme->referenceUpdate(x, fixture.ref, fixture.ref.F,
+                                            carriesK ? &fixture.ref.K : nullptr).ok());
+    CHECK(fixture.ref.F == F);
+    for (std::size_t a = 0; a < K.size(); ++a)
+    {
+        for (int k = 0; k < D; ++k)
+        {
+            REQUIRE(fixture.ref.K[a].slice[static_cast<std::size_t>(k)] ==
+                    K[a].slice[static_cast<std::size_t>(k)]);
+        }
+    }
+    if (updated)
+    {
+        CHECK(F != std::vector<Mat<D>>(F.size(), F.front())); // F^r varied: a real test
+    }
+}
+
 // A distributed run's ghosts (ForceInput::owned = 0) count in neither the strain energy nor the
 // failure checks: the energies of complementary masks add up to the whole, and a particle with
 // det F <= 0 is reported only while it is owned.
@@ -290,6 +320,7 @@ void checkAllSchemes()
             checkRigidMotion<D>(name, updated);
             checkParticleDeformationGradient<D>(name, updated);
             checkOwnedParticles<D>(name, updated);
+            checkInPlaceMove<D>(name, updated);
         }
     }
 }
