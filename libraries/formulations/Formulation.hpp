@@ -3,6 +3,7 @@
 //
 //   formulation { type totalLagrangian; }
 //   formulation { type updatedLagrangian; referenceUpdateInterval 1; }
+//   formulation { type totalLagrangian; kernelValues recomputed; }   // less memory, more time
 //
 // Total-Lagrangian keeps x^r = X for the whole run (kernel fixed in the initial configuration:
 // no tensile instability, spec §3.2). Updated-Lagrangian moves x^r to the current positions
@@ -32,6 +33,30 @@ public:
     virtual bool updatesReference() const = 0;
     // Whether it moves at `step`, last moved at `lastUpdate`.
     virtual bool updateDue(long step, long lastUpdate) const = 0;
+
+    // Whether the kernel values per pair (W and W'/r, 16 B per pair) are recomputed where they
+    // are used instead of stored (particles/ReferenceConfiguration.hpp): the same results, bit
+    // for bit, in less memory and more time.
+    bool recomputesKernelValues() const { return recomputesKernelValues_; }
+
+protected:
+    // The key every formulation takes.
+    static Key kernelValuesKey()
+    {
+        return Key::word("kernelValues",
+                         "kernel values per neighbour pair: stored (fast) or recomputed where "
+                         "they are used (16 B per pair less: about 1.2 kB per particle in 3D, "
+                         "for 10-40 % more time per step; the same results)")
+            .choices({"stored", "recomputed"})
+            .defaultValue("stored");
+    }
+    explicit Formulation(const Params& params)
+        : recomputesKernelValues_(params.word("kernelValues") == "recomputed")
+    {
+    }
+
+private:
+    bool recomputesKernelValues_ = false;
 };
 
 } // namespace sph

@@ -144,6 +144,7 @@ private:
     {
         const bool moved = ref_.updateStep > 0;
         const ReferenceNeeds needs = scheme_.referenceNeeds(kernel_);
+        ref_.recomputeKernelValues = formulation_.recomputesKernelValues();
         const long bad = ref_.rebuild(kernel_, body, needs.searchRadius,
                                       formulation_.updatesReference(), needs.kernelValues);
         if (bad >= 0 && !moved)

@@ -3,6 +3,7 @@
 
 #include "particles/Parallel.hpp"
 
+#include <atomic>
 #include <cmath>
 
 namespace sph
@@ -38,8 +39,12 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
     {
         candidates.update(x, body, radius, neighbours);
     }
-    const std::size_t pairs = neighbours.pairCount();
-    if (keepKernelValues)
+    kernel_ = &kernel;
+    keepsW_ = keepKernelValues;
+    static std::atomic<std::uint64_t> versions{0};
+    version_ = ++versions; // the recomputed values of an earlier rebuild are stale
+    const std::size_t pairs = recomputeKernelValues ? 0 : neighbours.pairCount();
+    if (keepKernelValues && !recomputeKernelValues)
     {
         resizePairArray(W, pairs);
     }
@@ -49,38 +54,71 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
         W.shrink_to_fit();
     }
     resizePairArray(dWdrOverR, pairs);
-    const std::size_t n = size();
-#pragma omp parallel if (useThreads(n))
+    if (recomputeKernelValues)
     {
-        std::vector<double> r;
-        std::vector<double> w;
-        std::vector<double> dw;
+        dWdrOverR.shrink_to_fit();
+    }
+    const std::size_t n = size();
+#pragma omp parallel if (useThreads(n) && !recomputeKernelValues)
+    {
+        PairBuffers values;
 #pragma omp for schedule(static)
-        for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t a = 0; a < (recomputeKernelValues ? 0 : n); ++a)
         {
+            evaluatePairs(a, values);
             const std::size_t first = neighbours.begin(a);
-            const std::size_t count = neighbours.count(a);
-            r.resize(count);
-            w.resize(count);
-            dw.resize(count);
-            for (std::size_t i = 0; i < count; ++i)
+            if (keepKernelValues)
             {
-                r[i] = (x[a] - x[neighbours.indices[first + i]]).norm();
+                std::copy(values.w.begin(), values.w.end(), W.begin() + static_cast<long>(first));
             }
-            kernel.evaluate(r.data(), count, w.data(), dw.data());
-            for (std::size_t i = 0; i < count; ++i)
-            {
-                if (keepKernelValues)
-                {
-                    W[first + i] = w[i];
-                }
-                // ∇W_ab = W'(r) (x_a - x_b)/r; zero for the particle itself.
-                dWdrOverR[first + i] = r[i] > 0.0 ? dw[i] / r[i] : 0.0;
-            }
+            std::copy(values.dwr.begin(), values.dwr.end(),
+                      dWdrOverR.begin() + static_cast<long>(first));
         }
     }
     return gradient.build(neighbours, x, V,
                           [this](std::size_t a, std::size_t k) { return gradW(a, k); }, owned);
+}
+
+template <int D>
+void ReferenceConfiguration<D>::evaluatePairs(std::size_t a, PairBuffers& values) const
+{
+    const std::size_t first = neighbours.begin(a);
+    const std::size_t count = neighbours.count(a);
+    values.r.resize(count);
+    values.w.resize(count);
+    values.dwr.resize(count);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        values.r[i] = (x[a] - x[neighbours.indices[first + i]]).norm();
+    }
+    kernel_->evaluate(values.r.data(), count, values.w.data(), values.dwr.data());
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        // ∇W_ab = W'(r) (x_a - x_b)/r; zero for the particle itself.
+        values.dwr[i] = values.r[i] > 0.0 ? values.dwr[i] / values.r[i] : 0.0;
+    }
+}
+
+// One buffer per thread, holding the particle it was last asked for: the loops ask for one
+// particle's pairs at a time, each of them several times in a row.
+template <int D>
+typename ReferenceConfiguration<D>::PairKernelValues
+ReferenceConfiguration<D>::recomputedKernelValues(std::size_t a) const
+{
+    struct Held
+    {
+        std::uint64_t version = 0;
+        std::size_t particle = 0;
+        PairBuffers values;
+    };
+    thread_local Held held;
+    if (held.version != version_ || held.particle != a)
+    {
+        evaluatePairs(a, held.values);
+        held.version = version_;
+        held.particle = a;
+    }
+    return {keepsW_ ? held.values.w.data() : nullptr, held.values.dwr.data()};
 }
 
 template struct ReferenceConfiguration<1>;

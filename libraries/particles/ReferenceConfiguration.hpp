@@ -13,6 +13,7 @@
 #include "particles/ParticleSet.hpp"
 #include "particles/VerletNeighbours.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace sph
@@ -27,10 +28,17 @@ struct ReferenceConfiguration
     std::vector<Tensor3<D>> K; // ∂F^r/∂x^r, only when the scheme carries it (else empty)
 
     NeighbourList neighbours;      // in x^r, same body, self first
-    std::vector<double> W;         // per pair: W(|x^r_ab|), when the scheme needs it
-    // Per pair W'(r)/r, so that ∇W_ab = W'(r)(x^r_a - x^r_b)/r = gradW(a, k): rebuilding the
-    // vector from x^r costs the loops no more memory traffic than storing it, at half the size.
+    // Per pair W(|x^r_ab|), when the scheme needs it, and W'(r)/r, so that
+    // ∇W_ab = W'(r)(x^r_a - x^r_b)/r = gradW(a, k): rebuilding the vector from x^r costs the
+    // loops no more memory traffic than storing it, at half the size. Both empty when the
+    // values are recomputed where they are used (recomputeKernelValues; read them through
+    // kernelValues(a) then).
+    std::vector<double> W;
     std::vector<double> dWdrOverR;
+    // Not storing W and W'/r per pair (formulation key `kernelValues recomputed`): 16 B per
+    // pair less (1.2 kB per particle in 3D), for a kernel evaluation per pair where a loop
+    // reads them. The values are the stored ones, bit for bit.
+    bool recomputeKernelValues = false;
     CorrectedGradient<D> gradient; // L_a, e_a from ∇W
     double searchRadius = 0.0;
     long updateStep = 0; // time step at which x^r was last set
@@ -58,10 +66,32 @@ struct ReferenceConfiguration
     long rebuild(const Kernel& kernel, const std::vector<int>& body, double radius,
                  bool reuseCandidates = false, bool keepKernelValues = true);
 
+    // The kernel values of particle a's pairs: slot k of its list at [k - neighbours.begin(a)]
+    // (W only when the scheme needs it). Stored: pointers into W and dWdrOverR. Recomputed:
+    // evaluated by the code that would have stored them, into a buffer of the calling thread
+    // that holds the last particle asked for (valid until the thread asks for another).
+    struct PairKernelValues
+    {
+        const double* W = nullptr;
+        const double* dWdrOverR = nullptr;
+    };
+    PairKernelValues kernelValues(std::size_t a) const
+    {
+        if (!recomputeKernelValues)
+        {
+            const std::size_t first = neighbours.begin(a);
+            return {W.empty() ? nullptr : &W[first], &dWdrOverR[first]};
+        }
+        return recomputedKernelValues(a);
+    }
+
     // ∇W_ab for slot k of a's list.
     Vec<D> gradW(std::size_t a, std::size_t k) const
     {
-        return dWdrOverR[k] * (x[a] - x[neighbours.indices[k]]);
+        const double dwr = recomputeKernelValues
+                               ? recomputedKernelValues(a).dWdrOverR[k - neighbours.begin(a)]
+                               : dWdrOverR[k];
+        return dwr * (x[a] - x[neighbours.indices[k]]);
     }
     // g_a(b) for slot k of a's list (k > begin(a)): V_b L_a ∇W_ab.
     Vec<D> g(std::size_t a, std::size_t k) const
@@ -70,6 +100,22 @@ struct ReferenceConfiguration
     }
     // g_a(a) = L_a e_a
     Vec<D> gSelf(std::size_t a) const { return gradient.L[a] * gradient.e[a]; }
+
+private:
+    // r, W(r) and W'(r)/r of particle a's pairs into the vectors of `values` (the one
+    // evaluation both the stored and the recomputed values come from).
+    struct PairBuffers
+    {
+        std::vector<double> r;
+        std::vector<double> w;
+        std::vector<double> dwr;
+    };
+    void evaluatePairs(std::size_t a, PairBuffers& values) const;
+    PairKernelValues recomputedKernelValues(std::size_t a) const;
+
+    const Kernel* kernel_ = nullptr; // of the last rebuild
+    bool keepsW_ = true;
+    std::uint64_t version_ = 0; // a number no other rebuild of any reference had
 };
 
 } // namespace sph

@@ -2,6 +2,7 @@
 // seed §2.3; spec §4).
 // Keys:
 //   referenceUpdateInterval | steps between moves of the reference configuration | 1
+//   kernelValues | stored | recomputed: W and W'/r per pair kept or recomputed | stored
 // Every step (1, the default) is the most unstable setting and the one in which the seed's
 // Dyka bar instability shows (spec §4).
 #include "formulations/Formulation.hpp"
@@ -24,10 +25,11 @@ public:
                                          "time steps between moves of the reference "
                                          "configuration")
                                 .min(1)
-                                .defaultValue("1"));
+                                .defaultValue("1"))
+            .add(Formulation<D>::kernelValuesKey());
     }
     UpdatedLagrangian(const Params& params, const typename Formulation<D>::Args&)
-        : interval_(params.integer("referenceUpdateInterval"))
+        : Formulation<D>(params), interval_(params.integer("referenceUpdateInterval"))
     {
     }
 

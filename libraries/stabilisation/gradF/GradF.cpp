@@ -50,10 +50,12 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
 #pragma omp parallel for schedule(static) reduction(max : singular) if (useThreads(n))
     for (std::size_t a = 0; a < n; ++a)
     {
+        const std::size_t first = list.begin(a);
+        const double* W = ref.kernelValues(a).W; // W[k - first] for slot k
         double denominator = 0.0;
-        for (std::size_t k = list.begin(a); k < list.end(a); ++k)
+        for (std::size_t k = first; k < list.end(a); ++k)
         {
-            denominator += ref.W[k] * ref.V[list.indices[k]];
+            denominator += W[k - first] * ref.V[list.indices[k]];
         }
         invDenominator_[a] = 1.0 / denominator;
         MatM Z = MatM::Zero();
@@ -63,7 +65,7 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
         {
             const Vec<D> xr = ref.x[list.indices[k]] - ref.x[a];
             const MonomialVec<D> z = monomials<D>(xr);
-            const double w = weight(ref, a, k);
+            const double w = W[k - first] * ref.V[list.indices[k]] * invDenominator_[a]; // Ŵ_ak
             Z.noalias() += w * z * z.transpose();
             s += w * z;
             Y.noalias() += w * z * xr.transpose();
@@ -106,6 +108,7 @@ typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vec
     const std::size_t count = list.count(a);
     const Vec<D> xra = ref.x[a];
     const double invDenominator = invDenominator_[a];
+    const typename ReferenceConfiguration<D>::PairKernelValues values = ref.kernelValues(a);
     Kinematics kin;
     if (atReference)
     {
@@ -113,7 +116,7 @@ typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vec
         {
             const std::size_t b = list.indices[first + j];
             scratch.xr[j] = ref.x[b] - xra;
-            scratch.w[j] = ref.W[first + j] * ref.V[b] * invDenominator;
+            scratch.w[j] = values.W[j] * ref.V[b] * invDenominator;
         }
         kin.f.setIdentity();
         kin.F = ref.F[a];
@@ -128,17 +131,16 @@ typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vec
     MatDM Rx = MatDM::Zero();
     const Vec<D> xa = x[a];
     scratch.xr[0].setZero();
-    scratch.w[0] = ref.W[first] * ref.V[a] * invDenominator;
+    scratch.w[0] = values.W[0] * ref.V[a] * invDenominator;
     for (std::size_t j = 1; j < count; ++j)
     {
-        const std::size_t k = first + j;
-        const std::size_t b = list.indices[k];
+        const std::size_t b = list.indices[first + j];
         const Vec<D> xr = ref.x[b] - xra;
-        const double w = ref.W[k] * ref.V[b] * invDenominator;
+        const double w = values.W[j] * ref.V[b] * invDenominator;
         scratch.xr[j] = xr;
         scratch.w[j] = w;
         const Vec<D> xba = x[b] - xa;
-        moment.noalias() -= (ref.V[b] * ref.dWdrOverR[k] * xba) * xr.transpose(); // ∇W_ab = -W'/r x^r_ba
+        moment.noalias() -= (ref.V[b] * values.dWdrOverR[j] * xba) * xr.transpose(); // ∇W_ab = -W'/r x^r_ba
         Rx.noalias() += (w * xba) * monomials<D>(xr).transpose();
     }
     kin.f = ref.gradient.deformation(a, moment);
@@ -167,12 +169,13 @@ Mat<D> GradF<D>::deformationGradient(std::size_t a, const std::vector<Vec<D>>& x
     const NeighbourList& list = ref.neighbours;
     Mat<D> moment = Mat<D>::Zero();
     const Vec<D> xa = x[a];
+    const double* dWdrOverR = ref.kernelValues(a).dWdrOverR; // [k - begin] for slot k
     for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
     {
         const std::size_t b = list.indices[k];
         const Vec<D> xr = ref.x[b] - ref.x[a];
         const Vec<D> xba = x[b] - xa;
-        moment.noalias() -= (ref.V[b] * ref.dWdrOverR[k] * xba) * xr.transpose();
+        moment.noalias() -= (ref.V[b] * dWdrOverR[k - list.begin(a)] * xba) * xr.transpose();
     }
     const Mat<D> f = ref.gradient.deformation(a, moment);
     return f * ref.F[a];
@@ -335,12 +338,13 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
         for (std::size_t c = 0; c < n; ++c)
         {
             Vec<D> sum = Vec<D>::Zero();
-            for (std::size_t k = list.begin(c) + 1; k < list.end(c); ++k)
+            const typename ReferenceConfiguration<D>::PairKernelValues values = ref.kernelValues(c);
+            for (std::size_t k = list.begin(c) + 1, j = 1; k < list.end(c); ++k, ++j)
             {
                 const std::size_t a = list.indices[k];
                 const Vec<D> xr = ref.x[a] - ref.x[c];
-                sum.noalias() += UL_[a] * (ref.dWdrOverR[k] * xr); // d_ac = ∇W_ac = -∇W_ca
-                sum.noalias() += ref.W[k] * (Cw_[a] * monomials<D>(xr));
+                sum.noalias() += UL_[a] * (values.dWdrOverR[j] * xr); // d_ac = ∇W_ac = -∇W_ca
+                sum.noalias() += values.W[j] * (Cw_[a] * monomials<D>(xr));
             }
             out.T[c] = -ref.V[c] * sum - UL_[c] * ref.gradient.e[c] + selfTerm_[c];
         }

@@ -102,11 +102,6 @@ private:
     // The least-squares matrix's smallest eigenvalue, relative to its mean (regularisedInverse).
     static constexpr double smallestEigenvalue = 0.02;
 
-    // Per-reference data of particle a (spec §6.2, §6.3).
-    double weight(const ReferenceConfiguration<D>& ref, std::size_t a, std::size_t k) const
-    {
-        return ref.W[k] * ref.V[ref.neighbours.indices[k]] * invDenominator_[a];
-    }
 
     std::vector<double> invDenominator_; // 1 / Σ_e W_ae V^r_e
     std::vector<MatM> Zinv_;             // Z_a^{-1}

@@ -37,6 +37,7 @@ Vec<D> Hourglass<D>::hourglassForce(std::size_t a, const ForceInput<D>& in,
     const NeighbourList& list = in.ref.neighbours;
     const double E = in.materials[static_cast<std::size_t>(in.body[a])]->youngsModulus();
     Vec<D> force = Vec<D>::Zero();
+    const double* W = in.ref.kernelValues(a).W; // W[k - begin] for slot k
     for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
     {
         const std::size_t b = list.indices[k];
@@ -44,14 +45,14 @@ Vec<D> Hourglass<D>::hourglassForce(std::size_t a, const ForceInput<D>& in,
         const Vec<D> xc = in.x[b] - in.x[a];
         const double length = xc.norm();
         const double referenceLength2 = xr.squaredNorm();
-        if (length <= 0.0 || referenceLength2 <= 0.0 || in.ref.W[k] == 0.0)
+        if (length <= 0.0 || referenceLength2 <= 0.0 || W[k - list.begin(a)] == 0.0)
         {
             continue;
         }
         const Vec<D> unit = xc / length;
         const Vec<D> gamma = 0.5 * (f[a] + f[b]) * xr - xc;
         const double delta = 0.5 * gamma.dot(unit);
-        force -= (alpha_ * E * in.V0[a] * in.V0[b] * in.ref.W[k] * delta / referenceLength2) * unit;
+        force -= (alpha_ * E * in.V0[a] * in.V0[b] * W[k - list.begin(a)] * delta / referenceLength2) * unit;
     }
     return force;
 }

@@ -241,6 +241,41 @@ void checkInPlaceMove(const std::string& name, bool updated)
     }
 }
 
+// Kernel values recomputed where they are used (formulation key kernelValues recomputed): no
+// W or W'/r stored, and the forces, F, P, the energy and a move of the reference are the
+// stored values' bit for bit.
+template <int D>
+void checkRecomputedKernelValues(const std::string& name, bool updated)
+{
+    INFO(name << (updated ? " UL" : " TL") << " " << D << "D, kernel values recomputed");
+    test::SchemeFixture<D> fixture(test::schemeCloud<D>(), test::schemeText<D>(name), kMaterial, updated, test::schemeHOverDx<D>());
+    const auto x = test::deformCurrent<D>(fixture.ref.x, 3);
+    const auto evaluate = [&](std::vector<Vec<D>>& T, std::vector<Mat<D>>& F, std::vector<Mat<D>>& P,
+                              std::vector<Mat<D>>& Fr) {
+        ForceOutput<D> out{T, F, P};
+        REQUIRE(fixture.scheme->computeForces(fixture.input(x), out, false).ok());
+        std::vector<Tensor3<D>> K;
+        REQUIRE(fixture.scheme->referenceUpdate(x, fixture.ref, Fr, fixture.ref.K.empty() ? nullptr : &K).ok());
+        return fixture.scheme->energy(fixture.input(x));
+    };
+    std::vector<Vec<D>> T1, T2;
+    std::vector<Mat<D>> F1, F2, P1, P2, Fr1, Fr2;
+    const double energy = evaluate(T1, F1, P1, Fr1);
+    const bool storedW = !fixture.ref.W.empty();
+    fixture.ref.recomputeKernelValues = true;
+    REQUIRE(fixture.ref.rebuild(*fixture.kernel, fixture.body,
+                                fixture.scheme->referenceNeeds(*fixture.kernel).searchRadius, false,
+                                storedW) < 0);
+    REQUIRE(fixture.scheme->prepare(fixture.ref).ok());
+    CHECK(fixture.ref.W.empty());
+    CHECK(fixture.ref.dWdrOverR.empty());
+    CHECK(evaluate(T2, F2, P2, Fr2) == energy);
+    CHECK(T2 == T1);
+    CHECK(F2 == F1);
+    CHECK(P2 == P1);
+    CHECK(Fr2 == Fr1);
+}
+
 // A distributed run's ghosts (ForceInput::owned = 0) count in neither the strain energy nor the
 // failure checks: the energies of complementary masks add up to the whole, and a particle with
 // det F <= 0 is reported only while it is owned.
@@ -321,6 +356,7 @@ void checkAllSchemes()
             checkParticleDeformationGradient<D>(name, updated);
             checkOwnedParticles<D>(name, updated);
             checkInPlaceMove<D>(name, updated);
+            checkRecomputedKernelValues<D>(name, updated);
         }
     }
 }
