@@ -47,8 +47,8 @@ struct CorrectedGradient
     std::vector<Mat<D>> complement; // C_a per particle; empty when every M_a is well-conditioned
     std::size_t deficient = 0;      // how many particles have C_a ≠ 0
 
-    // Computes L, e and C from the per-pair gradients d(a, k) (k a slot of a's list; the self
-    // slot is ignored). Returns the index of the first particle whose M_a is singular (det
+    // Computes L, e and C from the per-pair gradients d(a)(k) (d(a) gives particle a's, k a
+    // slot of a's list; the self slot is ignored). Returns the index of the first particle whose M_a is singular (det
     // below 1e-8: too few neighbours to span every direction), or -1; such particles get the
     // regularised L_a and C_a too. With `counted` (a distributed run's owned particles), only
     // those are reported: a ghost's neighbourhood may be cut at the edge of its rank's particles.
@@ -85,10 +85,11 @@ long CorrectedGradient<D>::build(const NeighbourList& list, const std::vector<Ve
     {
         Mat<D> M = Mat<D>::Zero();
         Vec<D> sum = Vec<D>::Zero();
+        const auto da = d(a);
         for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
         {
             const std::size_t b = list.indices[k];
-            const Vec<D> weighted = V[b] * d(a, k);
+            const Vec<D> weighted = V[b] * da(k);
             M.noalias() += (x[b] - x[a]) * weighted.transpose();
             sum += weighted;
         }

@@ -75,8 +75,13 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
                       dWdrOverR.begin() + static_cast<long>(first));
         }
     }
-    return gradient.build(neighbours, x, V,
-                          [this](std::size_t a, std::size_t k) { return gradW(a, k); }, owned);
+    return gradient.build(
+        neighbours, x, V,
+        [this](std::size_t a) {
+            const double* dwr = kernelValues(a).dWdrOverR;
+            return [this, a, dwr](std::size_t k) { return gradW(a, k, dwr); };
+        },
+        owned);
 }
 
 template <int D>

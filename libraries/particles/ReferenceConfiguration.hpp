@@ -85,13 +85,15 @@ struct ReferenceConfiguration
         return recomputedKernelValues(a);
     }
 
-    // ∇W_ab for slot k of a's list.
+    // ∇W_ab for slot k of a's list, with a's kernelValues(a).dWdrOverR (the loops over a's
+    // pairs fetch them once).
+    Vec<D> gradW(std::size_t a, std::size_t k, const double* dWdrOverRofA) const
+    {
+        return dWdrOverRofA[k - neighbours.begin(a)] * (x[a] - x[neighbours.indices[k]]);
+    }
     Vec<D> gradW(std::size_t a, std::size_t k) const
     {
-        const double dwr = recomputeKernelValues
-                               ? recomputedKernelValues(a).dWdrOverR[k - neighbours.begin(a)]
-                               : dWdrOverR[k];
-        return dwr * (x[a] - x[neighbours.indices[k]]);
+        return gradW(a, k, kernelValues(a).dWdrOverR);
     }
     // g_a(b) for slot k of a's list (k > begin(a)): V_b L_a ∇W_ab.
     Vec<D> g(std::size_t a, std::size_t k) const

@@ -5,9 +5,10 @@
 //   T_c = -Σ_a U_a g_a(c),  U_a = V0_a P_a F^r_a^T                       (spec §4)
 //       = -V_c Σ_{a≠c} (U_a L_a) d_ac - (U_c L_c) e_c                     (gather form)
 //
-// where d_ab is the gradient used for the pair. `GradientSet` supplies it:
-//   outgoing(a, k)  d_ab for slot k of a's list (pair a -> b)
-//   incoming(a, k)  d_ba for slot k of a's list (the gradient b's operator uses for a)
+// where d_ab is the gradient used for the pair. `GradientSet` supplies it, for one particle a
+// at a time (what a needs of its pairs fetched once):
+//   particle(a).outgoing(k)  d_ab for slot k of a's list (pair a -> b)
+//   particle(a).incoming(k)  d_ba for slot k of a's list (the gradient b's operator uses for a)
 //   L(a), e(a)   the corrected-gradient data; gradient() all of it (f_a with C_a).
 // For the standard kernel gradient incoming(k) = -outgoing(k) (the kernel gradient is odd);
 // the `vidal` scheme supplies shifted gradients instead.
@@ -28,8 +29,15 @@ struct StandardGradients
 {
     const ReferenceConfiguration<D>& ref;
 
-    Vec<D> outgoing(std::size_t a, std::size_t k) const { return ref.gradW(a, k); }
-    Vec<D> incoming(std::size_t a, std::size_t k) const { return -ref.gradW(a, k); }
+    struct Particle
+    {
+        const ReferenceConfiguration<D>& ref;
+        std::size_t a;
+        const double* dWdrOverR; // a's kernel values (stored or recomputed)
+        Vec<D> outgoing(std::size_t k) const { return ref.gradW(a, k, dWdrOverR); }
+        Vec<D> incoming(std::size_t k) const { return -ref.gradW(a, k, dWdrOverR); }
+    };
+    Particle particle(std::size_t a) const { return {ref, a, ref.kernelValues(a).dWdrOverR}; }
     const Mat<D>& L(std::size_t a) const { return ref.gradient.L[a]; }
     const Vec<D>& e(std::size_t a) const { return ref.gradient.e[a]; }
     const CorrectedGradient<D>& gradient() const { return ref.gradient; }
@@ -43,10 +51,11 @@ Mat<D> incrementalGradient(std::size_t a, const std::vector<Vec<D>>& x,
     const NeighbourList& list = ref.neighbours;
     Mat<D> sum = Mat<D>::Zero();
     const Vec<D> xa = x[a];
+    const auto pairs = gradients.particle(a);
     for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
     {
         const std::size_t b = list.indices[k];
-        sum.noalias() += (ref.V[b] * (x[b] - xa)) * gradients.outgoing(a, k).transpose();
+        sum.noalias() += (ref.V[b] * (x[b] - xa)) * pairs.outgoing(k).transpose();
     }
     return gradients.gradient().deformation(a, sum); // + C_a for a deficient support
 }
@@ -58,9 +67,10 @@ Vec<D> gatherCsphForce(std::size_t c, const ReferenceConfiguration<D>& ref,
 {
     const NeighbourList& list = ref.neighbours;
     Vec<D> sum = Vec<D>::Zero();
+    const auto pairs = gradients.particle(c);
     for (std::size_t k = list.begin(c) + 1; k < list.end(c); ++k)
     {
-        sum.noalias() += UL[list.indices[k]] * gradients.incoming(c, k);
+        sum.noalias() += UL[list.indices[k]] * pairs.incoming(k);
     }
     return -ref.V[c] * sum - UL[c] * gradients.e(c);
 }

@@ -65,7 +65,9 @@ ForceStatus Vidal<D>::prepare(const ReferenceConfiguration<D>& ref)
         }
     }
     const long singular = corrected_.build(list, ref.x, ref.V,
-                                           [this](std::size_t, std::size_t k) { return out_[k]; },
+                                           [this](std::size_t) {
+                                               return [this](std::size_t k) { return out_[k]; };
+                                           },
                                            ref.owned);
     return singular < 0 ? ForceStatus{}
                         : ForceStatus::failed(FailureKind::singularReference, singular, 0.0,

@@ -30,8 +30,14 @@ struct ShiftedGradients
     const std::vector<Vec<D>>& in;  // ∇W(p_b - x^r_a) for slot k = (a, b)
     const CorrectedGradient<D>& corrected;
 
-    const Vec<D>& outgoing(std::size_t, std::size_t k) const { return out[k]; }
-    const Vec<D>& incoming(std::size_t, std::size_t k) const { return in[k]; }
+    struct Particle
+    {
+        const std::vector<Vec<D>>& out;
+        const std::vector<Vec<D>>& in;
+        const Vec<D>& outgoing(std::size_t k) const { return out[k]; }
+        const Vec<D>& incoming(std::size_t k) const { return in[k]; }
+    };
+    Particle particle(std::size_t) const { return {out, in}; }
     const Mat<D>& L(std::size_t a) const { return corrected.L[a]; }
     const Vec<D>& e(std::size_t a) const { return corrected.e[a]; }
     const CorrectedGradient<D>& gradient() const { return corrected; }
