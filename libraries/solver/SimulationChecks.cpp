@@ -106,11 +106,15 @@ long Simulation<D>::crossingParticle() const
 {
     if constexpr (D == 1)
     {
+        // A distributed run checks its local particles (the ghosts' x are their owners') and
+        // reports a crossing at an owned particle; the ranks agree on the least global index,
+        // the serial run's first crossing along the bar when the ids follow the bar.
         for (const auto& order : barOrder_)
         {
             for (std::size_t i = 1; i < order.size(); ++i)
             {
-                if (!(particles_.x[order[i]][0] > particles_.x[order[i - 1]][0]))
+                if (!(particles_.x[order[i]][0] > particles_.x[order[i - 1]][0]) &&
+                    (!distributed() || owned_[order[i]]))
                 {
                     return static_cast<long>(order[i]);
                 }

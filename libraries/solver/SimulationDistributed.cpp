@@ -34,28 +34,29 @@ namespace sph
 template <int D>
 void Simulation<D>::checkDistributable() const
 {
-    const auto refuse = [](const std::string& what) {
+    const auto refuse = [](const std::string& what, const std::string& how) {
         throw InputError(what + " does not run on several ranks yet",
-                         {"A distributed run (sphSolid -parallel on more than one rank) supports "
-                          "2D and 3D cases with any kernel, formulation and stabilisation, elastic "
-                          "and plastic materials, contact between bodies, rigid walls, artificial "
-                          "viscosity, gravity, fixed particles and function objects; run this "
-                          "case serially (or on one rank) until the rest lands "
-                          "(docs/parallel.md)."});
+                         {how + "; or run this case serially (or on one rank). A distributed run "
+                                "(sphSolid -parallel on more than one rank) supports 1D, 2D and "
+                                "3D cases with any kernel, formulation and stabilisation, elastic "
+                                "and plastic materials, contact between bodies, rigid walls, "
+                                "artificial viscosity, gravity, fixed particles and the function "
+                                "objects of sphSolid (docs/parallel.md)."});
     };
-    if (D == 1)
-    {
-        refuse("a 1D case");
-    }
     if (viscosity_->active() && integrator_->velocityField().empty())
     {
-        refuse("artificial viscosity with a time integration that names no velocity field");
+        refuse("artificial viscosity with a time integration that names no velocity field",
+               "A time integration names the field the viscosity reads "
+               "(TimeIntegration::velocityField), so that ghosts get their owners' velocities");
     }
     for (const auto& object : functionObjects_)
     {
         if (!object->distributable())
         {
-            refuse("function object '" + object->name() + "' (" + object->summary() + ")");
+            refuse("function object '" + object->name() + "' (" + object->summary() + ")",
+                   "A function object runs distributed when it visits the particles each rank "
+                   "owns (StepState::rankView), combines the ranks' results ("
+                   "particles/ParticleRanks.hpp) and says so (distributable())");
         }
     }
 }

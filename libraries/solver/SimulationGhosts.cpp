@@ -145,6 +145,7 @@ void Simulation<D>::localParticlesChanged()
     }
     reference_->reference().candidates.clear(); // the last search's indices are stale
     viscosity_->particlesChanged();
+    checkCrossingOrder(); // 1D: the bars' order of the new local particles
     const ForceStatus status = formulation_->updatesReference()
                                    ? reference_->restored(particles_)
                                    : reference_->initialise(particles_);

@@ -180,11 +180,14 @@ void Simulation<D>::setupViscosity(const SchemeSettings& schemes)
     }
 }
 
+// 1D: each body's particles in the order of X along the bar, which they must keep (a
+// distributed run sorts its local particles again whenever they change).
 template <int D>
 void Simulation<D>::checkCrossingOrder()
 {
     if constexpr (D == 1)
     {
+        barOrder_.clear();
         for (const BodyRange& range : particles_.bodies)
         {
             std::vector<std::size_t> order(range.size());
