@@ -43,37 +43,14 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
     keepsW_ = keepKernelValues;
     static std::atomic<std::uint64_t> versions{0};
     version_ = ++versions; // the recomputed values of an earlier rebuild are stale
-    const std::size_t pairs = recomputeKernelValues ? 0 : neighbours.pairCount();
-    if (keepKernelValues && !recomputeKernelValues)
+    if (recomputeKernelValues)
     {
-        resizePairArray(W, pairs);
+        W = {};
+        dWdrOverR = {};
     }
     else
     {
-        W.clear();
-        W.shrink_to_fit();
-    }
-    resizePairArray(dWdrOverR, pairs);
-    if (recomputeKernelValues)
-    {
-        dWdrOverR.shrink_to_fit();
-    }
-    const std::size_t n = size();
-#pragma omp parallel if (useThreads(n) && !recomputeKernelValues)
-    {
-        PairBuffers values;
-#pragma omp for schedule(static)
-        for (std::size_t a = 0; a < (recomputeKernelValues ? 0 : n); ++a)
-        {
-            evaluatePairs(a, values);
-            const std::size_t first = neighbours.begin(a);
-            if (keepKernelValues)
-            {
-                std::copy(values.w.begin(), values.w.end(), W.begin() + static_cast<long>(first));
-            }
-            std::copy(values.dwr.begin(), values.dwr.end(),
-                      dWdrOverR.begin() + static_cast<long>(first));
-        }
+        storeKernelValues(keepKernelValues);
     }
     return gradient.build(
         neighbours, x, V,
@@ -82,6 +59,37 @@ long ReferenceConfiguration<D>::rebuild(const Kernel& kernel, const std::vector<
             return [this, a, dwr](std::size_t k) { return gradW(a, k, dwr); };
         },
         owned);
+}
+
+template <int D>
+void ReferenceConfiguration<D>::storeKernelValues(bool withW)
+{
+    if (withW)
+    {
+        resizePairArray(W, neighbours.pairCount());
+    }
+    else
+    {
+        W = {};
+    }
+    resizePairArray(dWdrOverR, neighbours.pairCount());
+    const std::size_t n = size();
+#pragma omp parallel if (useThreads(n))
+    {
+        PairBuffers values;
+#pragma omp for schedule(static)
+        for (std::size_t a = 0; a < n; ++a)
+        {
+            evaluatePairs(a, values);
+            const std::size_t first = neighbours.begin(a);
+            if (withW)
+            {
+                std::copy(values.w.begin(), values.w.end(), W.begin() + static_cast<long>(first));
+            }
+            std::copy(values.dwr.begin(), values.dwr.end(),
+                      dWdrOverR.begin() + static_cast<long>(first));
+        }
+    }
 }
 
 template <int D>

@@ -113,6 +113,7 @@ private:
         std::vector<double> dwr;
     };
     void evaluatePairs(std::size_t a, PairBuffers& values) const;
+    void storeKernelValues(bool withW);
     PairKernelValues recomputedKernelValues(std::size_t a) const;
 
     const Kernel* kernel_ = nullptr; // of the last rebuild
