@@ -81,6 +81,16 @@ sph_add_solver_run("migrating particles bit-identical on 3 ranks" 3
                    -set endTime=0.01 -set writeInterval=0.0025 -set functions={}
                    -set bodies.plate.initialVelocity.spin.omega=40
                    -set controlDict.maxLoadImbalance=1.01)
+# On 4 ranks: the copper bar of the impact tutorial with UL gradF, its samples' plastic states
+# migrating with their particles (12 repartitions in 394 steps). On 2 ranks these cases stay
+# balanced (RCB cuts them along a symmetry, so both ranks hold the same load): migration on 2
+# ranks is tested by the exchange itself (communicator, RCB and exchange on 2 ranks).
+sph_add_solver_run("migrating particles with per-sample history bit-identical on 4 ranks" 4
+                   ${CMAKE_SOURCE_DIR}/tutorials/plasticity2D/impact migrating -threads 1
+                   -set endTime=1.5e-5 -set writeInterval=5e-6 -set formulation.type=updatedLagrangian
+                   -set stabilisation.type=gradF -set controlDict.maxLoadImbalance=1.01)
+set_property(TEST "parallel:sphSolid migrating particles with per-sample history bit-identical on 4 ranks"
+             APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy wall")
 
 # Restart N -> M: stopped at 5 ms on N ranks, continued to 10 ms on M ranks (1: serially), the
 # end bit-identical to the uninterrupted serial run (UL gradF: the reference, the integrator and
