@@ -46,7 +46,8 @@ protected:
         return Key::word("kernelValues",
                          "kernel values per neighbour pair: stored (fast) or recomputed where "
                          "they are used (16 B per pair less: about 1.2 kB per particle in 3D, "
-                         "for 10-40 % more time per step; the same results)")
+                         "for 7-36 % more time per step with gradF and about twice the time "
+                         "with none; the same results)")
             .choices({"stored", "recomputed"})
             .defaultValue("stored");
     }
