@@ -18,9 +18,11 @@ template <int D>
 class ReferenceManager
 {
 public:
+    // materials: by body, for a scheme that carries the materials' history across a move.
     ReferenceManager(const Formulation<D>& formulation, Stabilisation<D>& scheme,
-                     const Kernel& kernel)
-        : formulation_(formulation), scheme_(scheme), kernel_(kernel)
+                     const Kernel& kernel, std::vector<Material<D>*> materials = {})
+        : formulation_(formulation), scheme_(scheme), kernel_(kernel),
+          materials_(std::move(materials))
     {
     }
 
@@ -97,6 +99,9 @@ public:
         std::function<void()> settled;
     };
 
+    // Whether the reference moves at this step (updateIfDue() will move it).
+    bool moveDue(long step) const { return formulation_.updateDue(step, ref_.updateStep); }
+
     // Moves the reference configuration to the current positions when due. Returns whether it
     // moved; a failure (det F <= 0 at the move) is reported in `status`.
     bool updateIfDue(long step, const ParticleSet<D>& particles, ForceStatus& status,
@@ -110,6 +115,7 @@ public:
         // writes its new ones (no second copy: 288 B per particle in 3D). A failed move
         // leaves them changed, but the run then stops, and its last good state is written
         // as not restartable.
+        scheme_.moveHistory(particles.x, ref_, particles.body, materials_);
         status = scheme_.referenceUpdate(particles.x, ref_, ref_.F, carriesK() ? &ref_.K : nullptr);
         if (hooks.checked)
         {
@@ -164,6 +170,7 @@ private:
     Stabilisation<D>& scheme_;
     const Kernel& kernel_;
     ReferenceConfiguration<D> ref_;
+    std::vector<Material<D>*> materials_;
     std::vector<std::string> fieldNames_;
 };
 

@@ -44,6 +44,11 @@ struct EnergyBalance
     double wallPotential = 0.0; // Σ ½ k δ² of the rigid walls (walls/WallSet.hpp)
     double wallWork = 0.0; // work of the walls since t = 0: moving, removing, friction
     double viscousWork = 0.0; // work of the artificial viscosity since t = 0 (<= 0: dissipated)
+    // The change of Π at the reference moves since t = 0 (only when a function object asks for
+    // it, needsMoveEnergy): their sum, the sum of the positive ones and the largest one.
+    double moveSum = 0.0;
+    double moveGain = 0.0;
+    double moveLargest = 0.0;
     double total = 0.0;
     double drift = 0.0;
 };
@@ -120,6 +125,10 @@ public:
         (void)time;
         return false;
     }
+    // Whether it tabulates what each move of the reference configuration does to the strain
+    // energy (the solver then evaluates Π just before every move: one energy evaluation per
+    // move; docs/theory/gradF-plastic.md §G6).
+    virtual bool needsMoveEnergy() const { return false; }
     // Whether it runs on several ranks: visits only the particles of state.rankView() that
     // count() and combines its results over the ranks (ParticleRanks). Otherwise a distributed
     // run refuses the case (a rank holds ghosts too: it would count them).

@@ -140,6 +140,23 @@ public:
         (void)a;
         (void)out;
     }
+    // A packed state (packHistory's layout) re-expressed so that its elastic state be at the
+    // gradient `to` is the one it had at `from` (docs/theory/gradF-plastic.md (G4.1)): what a
+    // stress sample's state becomes when the reference it is measured from moves.
+    virtual void rebaseHistory(double* state, const Mat<D>& from, const Mat<D>& to) const
+    {
+        (void)state;
+        (void)from;
+        (void)to;
+    }
+    // The same for particle a's own committed state (its be at `to` is the one it had at
+    // `from`).
+    virtual void rebaseParticleHistory(std::size_t a, const Mat<D>& from, const Mat<D>& to)
+    {
+        (void)a;
+        (void)from;
+        (void)to;
+    }
     virtual double commit(const Mat<D>* F, const double* V0, std::size_t first, std::size_t n)
     {
         (void)F;

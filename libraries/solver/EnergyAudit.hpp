@@ -17,6 +17,7 @@
 #include "core/RunScalars.hpp"
 #include "functionObjects/FunctionObject.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -99,6 +100,21 @@ public:
         external_ += total(work);
     }
 
+    // Only when a function object tabulates the moves' energy (their restart scalars).
+    void declareMoveEnergy(RunScalars& scalars)
+    {
+        scalars.bind("moveEnergySum", moveSum_);
+        scalars.bind("moveEnergyGain", moveGain_);
+        scalars.bind("moveEnergyLargest", moveLargest_);
+    }
+    // What one move of the reference configuration changed Π by, at fixed positions (§G6).
+    void addMoveChange(double change)
+    {
+        moveSum_ += change;
+        moveGain_ += std::max(change, 0.0);
+        moveLargest_ = std::max(moveLargest_, change);
+    }
+
     // Energy dissipated by a commit of the materials' history.
     void addDissipation(double energy) { dissipated_ += energy; }
 
@@ -154,6 +170,9 @@ public:
         }
         e.dissipated = dissipated_;
         e.viscousWork = viscous_;
+        e.moveSum = moveSum_;
+        e.moveGain = moveGain_;
+        e.moveLargest = moveLargest_;
         e.total = e.kinetic + e.strain + e.wallPotential + e.dissipated - e.external - e.contact -
                   e.wallWork - e.viscousWork;
         if (!haveInitial_)
@@ -190,6 +209,9 @@ private:
     bool viscousPending_ = false;  // the half of the last drift's viscous work with F^{n+1}
     double contact_ = 0.0;
     double dissipated_ = 0.0;
+    double moveSum_ = 0.0;     // Σ ΔΠ over the reference moves
+    double moveGain_ = 0.0;    // Σ max(ΔΠ, 0)
+    double moveLargest_ = 0.0; // max ΔΠ of one move (0 while none rose)
     std::vector<double> wallWork_; // by wall
     double initial_ = 0.0;
     bool haveInitial_ = false;

@@ -83,8 +83,13 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         // energy sums it triggers are collective, so the ranks agree first.
         const bool progress = distributed() ? comm_.maximum(log.progressDue() ? 1.0 : 0.0) > 0.0
                                             : log.progressDue();
-        const bool wantEnergy = progress || energyWanted(firstStep);
+        const bool wantEnergy = progress || energyWanted(firstStep) || energyBeforeMove_;
         const ForceStatus forces = computeForces(atReference, wantEnergy);
+        if (energyBeforeMove_)
+        {
+            audit_.addMoveChange(forces.strainEnergy - *energyBeforeMove_);
+            energyBeforeMove_.reset();
+        }
         computeViscosity();
         chooseTimeStep(step_ == firstStep && !restarted, step_ == firstStep);
         // The run ends at the first level at or after endTime (no shortened last step: a run
@@ -224,15 +229,35 @@ bool Simulation<D>::moveReference(long firstStep)
             checkStatus(moveStatus, "moving the reference configuration");
         },
         [this] { refreshGhosts(reference_->fieldNames()); }};
+    // Π at these positions with the reference before the move, against Π with the moved one
+    // from the force evaluation that follows (§G6).
+    const std::optional<double> before =
+        moveEnergyWanted_ && reference_->moveDue(step_) ? std::optional<double>(strainEnergyNow())
+                                                        : std::nullopt;
     const bool moved = distributed() ? reference_->updateIfDue(step_, particles_, status, hooks)
                                      : reference_->updateIfDue(step_, particles_, status);
     checkStatus(status, "moving the reference configuration");
+    if (moved)
+    {
+        energyBeforeMove_ = before;
+    }
     if (moved && distributed() && regatherDue())
     {
         regather();
     }
     const ReferenceConfiguration<D>& ref = reference_->reference();
     return moved || (step_ == firstStep && ref.updateStep == step_ && ref.x == particles_.x);
+}
+
+template <int D>
+double Simulation<D>::strainEnergyNow()
+{
+    ForceInput<D> in{particles_.x, particles_.V0, particles_.body, particles_.bodies,
+                     materials_, reference_->reference(), false};
+    in.owned = distributed() ? &owned_ : nullptr;
+    in.globalId = distributed() ? &globalId_ : nullptr;
+    const double energy = scheme_->energy(in);
+    return distributed() ? comm_.sum(energy) : energy;
 }
 
 template <int D>

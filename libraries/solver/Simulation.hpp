@@ -40,6 +40,7 @@
 #include "walls/WallSet.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -100,6 +101,7 @@ private:
     bool outputDueNow() const; // the VTK output is due at this level
     bool moveReference(long firstStep);           // x^n -> the reference configuration
     bool energyWanted(long firstStep) const;      // the function objects' needs -> bool
+    double strainEnergyNow();                     // x^n, the reference as it is -> Π
     ForceStatus computeForces(bool atReference,   // x^n, reference -> T (in acceleration_),
                               bool wantEnergy);   //   F^n, P^n, Π^n
     void accelerate();                            // T, m, g, fixed -> a^n (in place)
@@ -195,6 +197,10 @@ private:
     std::vector<std::unique_ptr<Material<D>>> materialModels_;
     std::vector<const Material<D>*> materials_;
     bool historyMaterials_ = false; // some body's material keeps a per-particle history
+    // A function object tabulates the reference moves' energy (needsMoveEnergy), and Π just
+    // before the move of this step, while its change is still to be booked.
+    bool moveEnergyWanted_ = false;
+    std::optional<double> energyBeforeMove_;
     std::unique_ptr<Formulation<D>> formulation_;
     std::unique_ptr<Stabilisation<D>> scheme_;
     std::unique_ptr<Contact<D>> contact_;

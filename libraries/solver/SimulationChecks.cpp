@@ -160,10 +160,14 @@ void Simulation<D>::failWith(const std::string& diagnosis)
                   std::to_string(lastGood_.time) + " s) is written to " + lastOutputFile_ +
                   " (listed in VTK/" + caseName_ + ".pvd).";
     }
-    throw NumericalFailure(diagnosis + "\n" + written +
-                           "\nLikely causes: the scheme is unstable for this problem (try "
-                           "stabilisation gradF or formulation totalLagrangian), the time step is "
-                           "too large (lower courant), or the deformation is beyond the material "
+    // What to try depends on what runs: a scheme never suggests itself.
+    const std::string next = scheme_->nextToTry(formulation_->updatesReference(), historyMaterials_);
+    throw NumericalFailure(diagnosis + "\n" + written + "\nLikely causes: " +
+                           (next.empty() ? std::string()
+                                         : "the scheme is unstable for this problem (try " + next +
+                                               "), ") +
+                           "the time step is too large (lower courant), the spacing too coarse "
+                           "for the deformation, or the deformation is beyond the material "
                            "model.");
 }
 

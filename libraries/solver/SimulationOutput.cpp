@@ -182,6 +182,10 @@ void Simulation<D>::declareFields()
     integrator_->attach(p.v, fields_, runScalars_);
     reference_->declareFields(fields_, runScalars_);
     audit_.declareState(runScalars_, walls_->names());
+    if (moveEnergyWanted_)
+    {
+        audit_.declareMoveEnergy(runScalars_);
+    }
     if (viscosity_->active())
     {
         audit_.declareViscousWork(runScalars_);

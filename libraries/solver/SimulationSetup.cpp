@@ -60,7 +60,12 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
     checkCrossingOrder();
     setupFunctionObjects();
 
-    reference_ = std::make_unique<ReferenceManager<D>>(*formulation_, *scheme_, *kernel_);
+    std::vector<Material<D>*> materials;
+    for (const auto& material : materialModels_)
+    {
+        materials.push_back(material.get());
+    }
+    reference_ = std::make_unique<ReferenceManager<D>>(*formulation_, *scheme_, *kernel_, materials);
     const Entry* hOverDx = schemes.kernel->find("hOverDx");
     kernelLocation_ = hOverDx ? hOverDx->valueLocation() : schemes.kernel->location();
     if (comm_.parallel())
@@ -228,6 +233,7 @@ void Simulation<D>::setupFunctionObjects()
         args.ranks = &ranks_;
         functionObjects_.push_back(selectModel<FunctionObject<D>>(
             entry.dict(), args, D, Selection::withBodies(bodyNames_)));
+        moveEnergyWanted_ = moveEnergyWanted_ || functionObjects_.back()->needsMoveEnergy();
     }
 }
 

@@ -310,6 +310,10 @@ public:
             const Material<D>& material = *in.materials[b];
             for (std::size_t a = range.begin; a < range.end; ++a)
             {
+                if (!in.counts(a))
+                {
+                    continue; // a ghost: its owner counts it
+                }
                 Mat<D> P;
                 double psi;
                 material.evaluate(&F[a], &P, &psi, 1, HistoryOf::particles(a));

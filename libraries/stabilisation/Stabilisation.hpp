@@ -193,6 +193,30 @@ public:
                                         std::vector<Mat<D>>& F,
                                         std::vector<Tensor3<D>>* newK) const = 0;
 
+    // Called just before referenceUpdate() moves the reference to x, with the old reference
+    // still in place: a scheme that keeps history per pair carries it across the move here,
+    // with the materials by body (gradF's elasticState samples, docs/theory/gradF-plastic.md
+    // §G4). By default nothing.
+    virtual void moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
+                             const std::vector<int>& body,
+                             const std::vector<Material<D>*>& materials)
+    {
+        (void)x;
+        (void)ref;
+        (void)body;
+        (void)materials;
+    }
+
+    // What to try next when a run with this scheme fails (the solver's diagnosis): a scheme
+    // that cannot help itself names another; `updated`: the reference moves, `plastic`: some
+    // material keeps a plastic history.
+    virtual std::string nextToTry(bool updated, bool plastic) const
+    {
+        (void)plastic;
+        return updated ? "stabilisation gradF, or formulation totalLagrangian"
+                       : "stabilisation gradF";
+    }
+
     // F_a = f_a F^r_a of one particle at positions x, as the force evaluation at x computes it
     // (to round-off; contact needs the current volumes V0 det F of the few particles near another body).
     virtual Mat<D> deformationGradient(std::size_t a, const std::vector<Vec<D>>& x,

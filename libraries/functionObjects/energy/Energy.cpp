@@ -14,10 +14,17 @@
 //   total    = kinetic + strain + wallPotential + dissipated - external - contact - wallWork
 //              - viscousWork (conserved by an exact integrator),
 //   drift    = (total - total(0)) / |total(0)|,
+//   moveEnergySum, moveEnergyGain, moveEnergyLargest (only with referenceMoves yes) = what the
+//              moves of the reference configuration changed Π by since t = 0, at fixed
+//              positions: their sum, the sum of the positive changes and the largest one
+//              (docs/theory/gradF-plastic.md §G6; moves that make no energy keep Gain at
+//              round-off),
 //   momentum_x .. (Σ m v) and, in 2D/3D, angularMomentum (Σ m x × v; _x _y _z in 3D):
 //   conserved by the internal forces and the contact kick, changed by fixed particles and
 //   external forces (spec §10).
-// Keys: writeInterval (see FunctionObject.hpp).
+// Keys: writeInterval (see FunctionObject.hpp),
+//   referenceMoves | Π before and after every reference move (one energy evaluation per
+//                    move: the reference moves every step in updated Lagrangian) | no
 #include "core/Format.hpp"
 #include "functionObjects/FunctionObjectModel.hpp"
 
@@ -36,10 +43,17 @@ public:
         return "Energy balance: kinetic, strain (the scheme's own energy), external and contact "
                "work, plastic dissipation, total and its relative drift.";
     }
-    static Schema schema() { return FunctionObjectModel<D>::commonSchema(); }
+    static Schema schema()
+    {
+        return FunctionObjectModel<D>::commonSchema().add(
+            Key::boolean("referenceMoves",
+                         "tabulate what each move of the reference configuration changes the "
+                         "strain energy by (costs one energy evaluation per move)")
+                .defaultValue("no"));
+    }
 
     Energy(const Params& params, const typename FunctionObject<D>::Args& args)
-        : FunctionObjectModel<D>(params, args)
+        : FunctionObjectModel<D>(params, args), withMoves_(params.boolean("referenceMoves"))
     {
         std::vector<std::string> columns{"kinetic", "strain", "external", "contact"};
         withWalls_ = args.wallNames && !args.wallNames->empty();
@@ -61,6 +75,10 @@ public:
             columns.push_back("dissipated");
         }
         columns.insert(columns.end(), {"total", "drift"});
+        if (withMoves_)
+        {
+            columns.insert(columns.end(), {"moveEnergySum", "moveEnergyGain", "moveEnergyLargest"});
+        }
         static const char* axes[3] = {"x", "y", "z"};
         for (int d = 0; d < D; ++d)
         {
@@ -76,6 +94,8 @@ public:
         }
         this->setColumns(columns);
     }
+
+    bool needsMoveEnergy() const override { return withMoves_; }
 
     bool needsEnergy(long, double time) const override
     {
@@ -114,6 +134,12 @@ public:
             row.push_back(e.dissipated);
         }
         row.insert(row.end(), {e.total, e.drift});
+        if (withMoves_)
+        {
+            row.insert(row.end(), {e.moveSum, e.moveGain, e.moveLargest});
+            moveGain_ = e.moveGain;
+            moveLargest_ = e.moveLargest;
+        }
         // The momenta over the owned particles, then over the ranks (round-off: a sum).
         const ParticleSet<D>& p = state.particles;
         const ParticleRanks& ranks = state.rankView();
@@ -145,14 +171,28 @@ public:
 
     std::vector<std::string> report() const override
     {
-        return {this->name() + ": total energy drift at the end " + formatScientific(drift_) +
-                ", largest |drift| " + formatScientific(maxDrift_)};
+        std::vector<std::string> lines{this->name() + ": total energy drift at the end " +
+                                       formatScientific(drift_) + ", largest |drift| " +
+                                       formatScientific(maxDrift_)};
+        if (withMoves_)
+        {
+            lines.push_back(this->name() + ": reference moves raised the strain energy by " +
+                            formatScientific(moveGain_) + " J in all, " +
+                            formatScientific(moveLargest_) + " J at most in one move");
+        }
+        return lines;
     }
     std::map<std::string, double> results() const override
     {
-        return {{"finalDrift", drift_},
-                {"maxDrift", maxDrift_},
-                {"maxStrainOverKinetic", maxStrainRatio_}};
+        std::map<std::string, double> r{{"finalDrift", drift_},
+                                        {"maxDrift", maxDrift_},
+                                        {"maxStrainOverKinetic", maxStrainRatio_}};
+        if (withMoves_)
+        {
+            r["moveEnergyGain"] = moveGain_;
+            r["moveEnergyLargest"] = moveLargest_;
+        }
+        return r;
     }
     void saveState(std::map<std::string, double>& state) const override
     {
@@ -171,6 +211,9 @@ private:
     bool withWalls_ = false; // the case has constant/walls: their columns
     bool withViscosity_ = false; // an artificial viscosity is selected: its column
     bool withDissipation_ = false; // a material keeps a plastic history: its column
+    bool withMoves_ = false;       // referenceMoves yes: the moves' columns
+    double moveGain_ = 0.0;        // of the last row (the audit keeps the restart state)
+    double moveLargest_ = 0.0;
     static const std::vector<const Material<D>*>& noMaterials()
     {
         static const std::vector<const Material<D>*> none;

@@ -80,6 +80,23 @@ public:
 
     std::size_t historyComponents() const override { return State::packedSize; }
     void packHistory(std::size_t a, double* out) const override { state(a).pack(out); }
+    // (G4.1): Cp⁻¹ ← M Cp⁻¹ Mᵀ with M = to⁻¹ from, so that to Cp⁻¹ toᵀ = from Cp⁻¹ fromᵀ; the
+    // zz component (plane strain: F_zz = 1 on both sides) and α are unchanged.
+    void rebaseHistory(double* packed, const Mat<D>& from, const Mat<D>& to) const override
+    {
+        State s = State::unpack(packed);
+        const Mat<D> M = to.inverse() * from;
+        const Mat<D> Cp = M * s.inversePlastic * M.transpose();
+        s.inversePlastic = 0.5 * (Cp + Cp.transpose());
+        s.pack(packed);
+    }
+    void rebaseParticleHistory(std::size_t a, const Mat<D>& from, const Mat<D>& to) override
+    {
+        double packed[State::packedSize];
+        state(a).pack(packed);
+        rebaseHistory(packed, from, to);
+        history_.store(a, State::unpack(packed));
+    }
 
 protected:
     ReturnMapPlasticity(const Params& params, const typename Material<D>::Args& args);

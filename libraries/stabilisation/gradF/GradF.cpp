@@ -23,15 +23,19 @@ Schema GradF<D>::schema()
 {
     return Schema().add(Key::word("plasticSamples",
                                   "materials with history: ownHistory (every stress sample keeps "
-                                  "its own; exact energy) or linearised (the return's correction "
-                                  "at F_a, linearised; for comparison)")
-                            .choices({"ownHistory", "linearised"})
+                                  "its own; exact energy), elasticState (updated Lagrangian in "
+                                  "plastic flow: samples carry their elastic state across "
+                                  "reference moves instead of a carried gradient of F; "
+                                  "docs/theory/gradF-plastic.md) or linearised (the return's "
+                                  "correction at F_a, linearised; for comparison)")
+                            .choices({"ownHistory", "elasticState", "linearised"})
                             .defaultValue("ownHistory"));
 }
 
 template <int D>
 GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
-    : linearised_(params.word("plasticSamples") == "linearised")
+    : linearised_(params.word("plasticSamples") == "linearised"),
+      elasticState_(params.word("plasticSamples") == "elasticState")
 {
 }
 
@@ -202,7 +206,16 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
         const Kinematics kin = kinematics(a, x, ref, false, scratch);
         F[a] = kin.F;
 
-        if (newK)
+        if (a < spatialFrame_.size() && spatialFrame_[a])
+        {
+            // elasticState (§G4): the samples carry the gradient, the states the shape.
+            F[a] = std::pow(kin.F.determinant(), 1.0 / D) * Mat<D>::Identity();
+            if (newK)
+            {
+                (*newK)[a] = Tensor3<D>::zero();
+            }
+        }
+        else if (newK)
         {
             // K' = G f^{-1} on the derivative index: K'_ijk = G_ijl (f^{-1})_lk (spec §6.5).
             const Mat<D> finv = kin.f.inverse();
@@ -246,7 +259,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
     selfTerm_.resize(n);
     const std::vector<ParticleChunk>& chunks = chunkCache_.of(in.bodies);
     const bool carriesK = !ref.K.empty();
-    samples_.follow(list, in.body, in.materials, in.globalId);
+    samples_.follow(list, in.body, in.materials, in.globalId, elasticState_ ? &ref.F : nullptr);
     sampleDissipation_.resize(n);
     std::vector<ChunkTally> tallies(chunks.size());
 #pragma omp parallel if (useThreads(n))
@@ -359,15 +372,22 @@ double GradF<D>::energy(const ForceInput<D>& in)
 {
     const ReferenceConfiguration<D>& ref = in.ref;
     const NeighbourList& list = ref.neighbours;
-    samples_.follow(list, in.body, in.materials, in.globalId);
-    double total = 0.0;
-    Scratch scratch; // one for all particles; kinematics() fills x^r_ba and Ŵ_ab
-    scratch.resize(maxNeighbours_);
-    for (std::size_t b = 0; b < in.bodies.size(); ++b)
+    samples_.follow(list, in.body, in.materials, in.globalId, elasticState_ ? &ref.F : nullptr);
+    // Each particle's share in parallel, summed in particle order (thread-count independent).
+    const std::size_t n = ref.size();
+    std::vector<double> share(n, 0.0);
+#pragma omp parallel if (useThreads(n))
     {
-        const Material<D>& material = *in.materials[b];
-        for (std::size_t a = in.bodies[b].begin; a < in.bodies[b].end; ++a)
+        Scratch scratch; // kinematics() fills x^r_ba and Ŵ_ab
+        scratch.resize(maxNeighbours_);
+#pragma omp for schedule(static)
+        for (std::size_t a = 0; a < n; ++a)
         {
+            if (!in.counts(a))
+            {
+                continue;
+            }
+            const Material<D>& material = *in.materials[static_cast<std::size_t>(in.body[a])];
             const Kinematics kin = kinematics(a, in.x, ref, false, scratch);
             double sum = 0.0;
             const std::size_t count = list.count(a);
@@ -380,8 +400,13 @@ double GradF<D>::energy(const ForceInput<D>& in)
             {
                 sum += scratch.w[j] * scratch.psi[j];
             }
-            total += in.V0[a] * sum;
+            share[a] = in.V0[a] * sum;
         }
+    }
+    double total = 0.0;
+    for (const double e : share)
+    {
+        total += e;
     }
     return total;
 }

@@ -17,8 +17,14 @@
 //   linearised  trial stresses from a's history plus the return's correction at F_a,
 //               linearised with its tangent (evaluation 2, for comparison: not an energy
 //               gradient); the particles commit at F_a as with `none`
+//   elasticState updated Lagrangian in plastic flow (docs/theory/gradF-plastic.md): the
+//               particles with history carry no K (G_a = H_a F^r_a, the gradient of the
+//               increment since the move) and their F^r is the dilation J^(1/D) I (G2.4);
+//               each sample keeps its own state, rebased at every move so that its elastic be
+//               does not change (G4.1); a new pair starts from its neighbour's state. Total
+//               Lagrangian: identical to ownHistory.
 // Keys:
-//   plasticSamples | ownHistory | linearised | ownHistory
+//   plasticSamples | ownHistory | linearised | elasticState | ownHistory
 
 #include "stabilisation/CsphOperators.hpp"
 #include "stabilisation/gradF/SampleHistory.hpp"
@@ -60,7 +66,19 @@ public:
             samples_.declare(materials, fields);
         }
     }
+    void moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
+                     const std::vector<int>& body,
+                     const std::vector<Material<D>*>& materials) override;
     double commitHistory(const HistoryCommit<D>& in) override;
+    std::string nextToTry(bool updated, bool plastic) const override
+    {
+        if (updated && plastic && !elasticState_)
+        {
+            return "plasticSamples elasticState in stabilisation (updated Lagrangian in plastic "
+                   "flow, docs/theory/gradF-plastic.md), or formulation totalLagrangian";
+        }
+        return updated ? "formulation totalLagrangian" : "";
+    }
 
     // Kinematics of particle a at positions x: f_a, F_a = f_a F^r_a and G_a (public for tests).
     struct Kinematics
@@ -117,7 +135,12 @@ private:
 
     // Materials with history: the samples' states and V0_a Σ_b Ŵ_ab D_b of each particle's
     // samples at the last evaluation (what its commit dissipates).
-    bool linearised_ = false; // plasticSamples linearised
+    bool linearised_ = false;   // plasticSamples linearised
+    bool elasticState_ = false; // plasticSamples elasticState
+    // elasticState: the particles with history, whose K the move sets to zero and whose F^r
+    // it sets to the dilation J^(1/D) I (§G4), marked by moveHistory() for the
+    // referenceUpdate() that follows it.
+    std::vector<std::uint8_t> spatialFrame_;
     SampleHistory<D> samples_;
     std::vector<double> sampleDissipation_;
     // Where the samples around particle a find their history (a's slots of the list).

@@ -48,15 +48,21 @@ public:
         }
     }
     bool active() const { return stride_ > 0; }
+    // Whether the states are laid out along the list last followed (and it has not changed).
+    bool current() const { return current_; }
     std::size_t stride() const { return stride_; }
 
     // The reference neighbour list was rebuilt: follow() it before the next evaluation.
     void listChanged() { current_ = false; }
 
     // Lays the states out along `list` (a no-op while it has not changed). globalId: each
-    // local particle's global index (null: its index).
+    // local particle's global index (null: its index). A new pair a–b starts from a's own
+    // state, or, given the reference gradients Fr, from b's own state expressed at a (its be
+    // kept: Material::rebaseHistory from Fr_b to Fr_a; docs/theory/gradF-plastic.md §G4) when b
+    // is of the same material and a had samples before (the first layout starts from a's).
     void follow(const NeighbourList& list, const std::vector<int>& body,
-                const std::vector<const Material<D>*>& materials, const std::vector<int>* globalId)
+                const std::vector<const Material<D>*>& materials, const std::vector<int>* globalId,
+                const std::vector<Mat<D>>* Fr = nullptr)
     {
         if (current_ || !active())
         {
@@ -77,6 +83,7 @@ public:
 #pragma omp parallel if (useThreads(n))
         {
             std::vector<double> owner(stride_, 0.0);
+            std::vector<double> neighbour(stride_, 0.0);
 #pragma omp for schedule(static)
             for (std::size_t a = 0; a < n; ++a)
             {
@@ -100,6 +107,16 @@ public:
                     }
                     const bool kept = old < oldEnd && neighbours_[old] == b;
                     const double* from = kept ? &states_[old * stride_] : owner.data();
+                    const std::size_t local = list.indices[k];
+                    // (A particle with no states yet is being laid out for the first time:
+                    // its samples start virgin, as its own state does.)
+                    if (!kept && !self && Fr && oldEnd > offsets_[a] &&
+                        materials[static_cast<std::size_t>(body[local])] == material)
+                    {
+                        material->packHistory(local, neighbour.data());
+                        material->rebaseHistory(neighbour.data(), (*Fr)[local], (*Fr)[a]);
+                        from = neighbour.data();
+                    }
                     std::copy(from, from + stride_, &remapped_[k * stride_]);
                 }
             }
@@ -119,6 +136,8 @@ public:
     // the states a commit would make of them.
     const double* committed(std::size_t k) const { return &states_[k * stride_]; }
     double* next(std::size_t k) { return &next_[k * stride_]; }
+    // The committed state in slot k, to be re-expressed when the reference moves (§G4).
+    double* committedForMove(std::size_t k) { return &states_[k * stride_]; }
 
     // The states of the last evaluation become the committed ones.
     void commit() { states_.swap(next_); }

@@ -230,6 +230,31 @@ struct SchemeFixture
         std::vector<Material<D>*> withHistory{material->hasHistory() ? material.get() : nullptr};
         return scheme->commitHistory({F, V0, bodies, withHistory});
     }
+    // Moves the reference configuration to x as the solver's ReferenceManager does
+    // (updated Lagrangian): the scheme carries its history across, F^r, K, x^r, V^r and what
+    // depends on them are rebuilt. Needs a force evaluation since the last change of the list.
+    ForceStatus moveReference(const std::vector<Vec<D>>& x)
+    {
+        const bool carriesK = scheme->referenceNeeds(*kernel).gradientOfF;
+        if (carriesK && ref.K.size() != x.size())
+        {
+            ref.K.assign(x.size(), Tensor3<D>::zero());
+        }
+        scheme->moveHistory(x, ref, body, {material.get()});
+        const ForceStatus status = scheme->referenceUpdate(x, ref, ref.F, carriesK ? &ref.K : nullptr);
+        if (!status.ok())
+        {
+            return status;
+        }
+        ref.x = x;
+        for (std::size_t a = 0; a < x.size(); ++a)
+        {
+            ref.V[a] = V0[a] * ref.F[a].determinant();
+        }
+        ref.updateStep += 1;
+        ref.rebuild(*kernel, body, scheme->referenceNeeds(*kernel).searchRadius, true);
+        return scheme->prepare(ref);
+    }
 };
 
 // A non-affine current configuration: x = (I + 0.15 R) x^r + 0.05 sin(x^r·w) + 0.03 noise.

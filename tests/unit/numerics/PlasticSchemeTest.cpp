@@ -82,7 +82,7 @@ void plasticForces(const std::string& name, bool updated, const std::string& ext
         sumForce += t.norm();
     }
     CHECK(total.cwiseAbs().maxCoeff() < 1e-13 * sumForce);
-    if (name == "hourglass" || !extra.empty() || !potential)
+    if (name == "hourglass" || extra.find("linearised") != std::string::npos || !potential)
     {
         return; // not an energy gradient: hourglass pair forces (spec §12), linearised samples,
                 // non-associative flow (§P9)
@@ -124,6 +124,8 @@ void everyScheme()
             {
                 noYieldingIsHencky<D>(name, updated, " plasticSamples linearised;");
                 plasticForces<D>(name, updated, " plasticSamples linearised;");
+                noYieldingIsHencky<D>(name, updated, " plasticSamples elasticState;");
+                plasticForces<D>(name, updated, " plasticSamples elasticState;");
             }
             if constexpr (D > 1)
             {

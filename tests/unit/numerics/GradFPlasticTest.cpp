@@ -1,0 +1,491 @@
+// gradF's elasticState samples (docs/theory/gradF-plastic.md): the samples carry their elastic
+// state across moves of the reference configuration instead of a carried gradient of F.
+//   - (G4.1) a rebased state has the same be, stress and energy at its new gradient;
+//   - (G4.2) a move changes Π only through the weights: every kept sample's energy is what it
+//     was, a new pair starts from its neighbour's state;
+//   - after a move, K = 0 for the particles with history, the force is −∂Π/∂x (finite
+//     differences), momentum is conserved;
+//   - objectivity: rotating every current configuration rotates the forces, changes no scalar;
+//   - the paper's gradF: identical for an affine motion, and for a smooth one the difference
+//     falls with the spacing at second order;
+//   - admissibility: every sample at a step's motion from a moved reference has det f > 0, on a
+//     distorted cloud with one-sided (boundary) neighbourhoods.
+#include "numerics/NumericsSupport.hpp"
+#include "stabilisation/gradF/GradF.hpp"
+
+#include <map>
+
+using namespace sph;
+
+namespace
+{
+
+const char* kPlastic = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 0.02; "
+                       "hardeningModulus 0.2;";
+const char* kElasticJ2 = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 1e30;";
+const char* kDP = "type druckerPrager; E 2.5; nu 0.3; rho 1; frictionAngle 30; "
+                  "dilatancyAngle 30; cohesion 0.01;";
+const char* kElasticState = "type gradF; plasticSamples elasticState;";
+
+template <int D>
+Mat<D> affine(double scale, unsigned seed)
+{
+    Mat<D> A = Mat<D>::Identity();
+    for (int i = 0; i < D; ++i)
+    {
+        for (int j = 0; j < D; ++j)
+        {
+            A(i, j) += scale * std::cos(seed + 5.0 * i + 3.0 * j);
+        }
+    }
+    return A;
+}
+
+template <int D>
+std::vector<Vec<D>> mapped(const Mat<D>& A, const std::vector<Vec<D>>& x)
+{
+    std::vector<Vec<D>> y(x.size());
+    for (std::size_t a = 0; a < x.size(); ++a)
+    {
+        y[a] = A * x[a];
+    }
+    return y;
+}
+
+// A step's motion: smooth plus a random part of `noise` spacings.
+template <int D>
+std::vector<Vec<D>> step(const std::vector<Vec<D>>& x, double noise, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::normal_distribution<double> normal;
+    std::vector<Vec<D>> y(x);
+    for (auto& p : y)
+    {
+        for (int d = 0; d < D; ++d)
+        {
+            p[d] += 0.01 * std::sin(0.4 * p.sum() + d) + noise * normal(random);
+        }
+    }
+    return y;
+}
+
+template <int D>
+double largestComponent(const std::vector<Vec<D>>& T)
+{
+    double value = 0.0;
+    for (const auto& t : T)
+    {
+        value = std::max(value, t.cwiseAbs().maxCoeff());
+    }
+    return value;
+}
+
+// W at F from one packed state (the samples' evaluation).
+template <int D>
+double sampleEnergy(const Material<D>& material, const Mat<D>& F, const std::vector<double>& state)
+{
+    Mat<D> P;
+    double psi = 0.0;
+    material.evaluate(&F, &P, &psi, 1, HistoryOf::samples(state.data(), state.size()));
+    return psi;
+}
+
+template <int D>
+Mat<D> sampleKirchhoff(const Material<D>& material, const Mat<D>& F, const std::vector<double>& state)
+{
+    Mat<D> P;
+    material.evaluate(&F, &P, nullptr, 1, HistoryOf::samples(state.data(), state.size()));
+    return P * F.transpose();
+}
+
+// (G4.1): after rebaseHistory(from → to) the state at `to` has the stress (τ) and energy the
+// old one had at `from`, also where the point yields (the trial be is the same, so is the return).
+template <int D>
+void rebaseKeepsTheElasticState(const char* materialText)
+{
+    INFO(D << "D " << materialText);
+    test::SchemeFixture<D> f(test::schemeCloud<D>(5), "type none;", materialText, false,
+                             test::schemeHOverDx<D>());
+    // A plastic history at particle 0: a commit at a large affine strain.
+    REQUIRE(f.commit(mapped<D>(affine<D>(0.12, 3), f.ref.x)) > 0.0);
+    std::vector<double> state(f.material->historyComponents());
+    f.material->packHistory(0, state.data());
+    for (const unsigned seed : {5u, 11u})
+    {
+        const Mat<D> from = affine<D>(0.15, seed);
+        const Mat<D> to = affine<D>(0.2, seed + 1);
+        std::vector<double> rebased = state;
+        f.material->rebaseHistory(rebased.data(), from, to);
+        const Mat<D> tauFrom = sampleKirchhoff<D>(*f.material, from, state);
+        const Mat<D> tauTo = sampleKirchhoff<D>(*f.material, to, rebased);
+        REQUIRE(tauFrom.norm() > 1e-3);
+        CHECK((tauTo - tauFrom).norm() < 1e-12 * tauFrom.norm());
+        const double W = sampleEnergy<D>(*f.material, from, state);
+        CHECK(sampleEnergy<D>(*f.material, to, rebased) == Approx(W).epsilon(1e-12));
+        // And it yields at both (a trial beyond the surface): the return is the same one.
+        const Mat<D> further = affine<D>(0.35, seed + 2);
+        std::vector<double> again = state;
+        f.material->rebaseHistory(again.data(), further * from, further * to);
+        CHECK((sampleKirchhoff<D>(*f.material, further * to, rebased) -
+               sampleKirchhoff<D>(*f.material, further * from, state))
+                  .norm() < 1e-10 * tauFrom.norm());
+    }
+}
+
+// (G4.2): Π after a move = Σ_a V0_a Σ_b Ŵ'_ab W_ab with every kept sample's W as it was before
+// the move and a new pair's W that of its neighbour's own state at the neighbour's F. The
+// states are made uniform (a commit at an affine F, where every sample is F_a) so that the test
+// can compute each sample's W from the particle's state.
+template <int D>
+void moveChangesOnlyTheWeights(const char* materialText)
+{
+    INFO(D << "D " << materialText);
+    test::SchemeFixture<D> f(test::schemeCloud<D>(7), kElasticState, materialText, false,
+                             test::schemeHOverDx<D>());
+    auto& scheme = dynamic_cast<GradF<D>&>(*f.scheme);
+    REQUIRE(f.commit(mapped<D>(affine<D>(0.12, 3), f.ref.x)) > 0.0);
+    std::vector<double> s0(f.material->historyComponents());
+    f.material->packHistory(0, s0.data());
+    const auto x1 = test::deformCurrent<D>(f.ref.x, 29);
+    f.forces(x1); // lays the states along the list, as the solver's last evaluation does
+    const ReferenceConfiguration<D> old = f.ref;
+    const auto weights = [](const ReferenceConfiguration<D>& ref, std::size_t a)
+    {
+        const NeighbourList& list = ref.neighbours;
+        std::vector<double> w(list.count(a));
+        double sum = 0.0;
+        for (std::size_t k = list.begin(a); k < list.end(a); ++k)
+        {
+            w[k - list.begin(a)] = ref.kernelValues(a).W[k - list.begin(a)] * ref.V[list.indices[k]];
+            sum += w[k - list.begin(a)];
+        }
+        for (double& value : w)
+        {
+            value /= sum;
+        }
+        return w;
+    };
+    std::vector<std::map<std::size_t, double>> W(x1.size());
+    std::vector<Mat<D>> F(x1.size()); // each particle's F at x1
+    double before = 0.0;
+    for (std::size_t a = 0; a < x1.size(); ++a)
+    {
+        const auto kin = scheme.kinematics(a, x1, old);
+        F[a] = kin.F;
+        const std::vector<double> w = weights(old, a);
+        for (std::size_t k = old.neighbours.begin(a); k < old.neighbours.end(a); ++k)
+        {
+            const std::size_t b = old.neighbours.indices[k];
+            const Mat<D> Fb = kin.F + kin.G.contract(Vec<D>(old.x[b] - old.x[a]));
+            W[a][b] = sampleEnergy<D>(*f.material, Fb, s0);
+            before += f.V0[a] * w[k - old.neighbours.begin(a)] * W[a][b];
+        }
+    }
+    REQUIRE(f.energy(x1) == Approx(before).epsilon(1e-12));
+    REQUIRE(f.moveReference(x1).ok());
+    double after = 0.0;
+    std::size_t newPairs = 0;
+    for (std::size_t a = 0; a < x1.size(); ++a)
+    {
+        const std::vector<double> w = weights(f.ref, a);
+        for (std::size_t k = f.ref.neighbours.begin(a); k < f.ref.neighbours.end(a); ++k)
+        {
+            const std::size_t b = f.ref.neighbours.indices[k];
+            const auto kept = W[a].find(b);
+            newPairs += kept == W[a].end() ? 1 : 0;
+            const double Wab = kept != W[a].end() ? kept->second
+                                                  : sampleEnergy<D>(*f.material, F[b], s0);
+            after += f.V0[a] * w[k - f.ref.neighbours.begin(a)] * Wab;
+        }
+    }
+    CHECK(newPairs > 0); // the list changed: new pairs were started
+    CHECK(std::abs(after - before) > 1e-6 * before); // the weights changed: the check has teeth
+    CHECK(f.energy(x1) == Approx(after).epsilon(1e-10));
+    // The new reference gradient is the dilation J^(1/D) I (§G4).
+    for (std::size_t a = 0; a < x1.size(); ++a)
+    {
+        const double J = F[a].determinant();
+        CHECK((f.ref.F[a] - std::pow(J, 1.0 / D) * Mat<D>::Identity()).norm() < 1e-14 * std::abs(J));
+    }
+}
+
+// After a move with a plastic history: K = 0 at every particle, and the force at a step further
+// is −∂Π/∂x of the rebased samples, with zero total.
+template <int D>
+void forceAfterAMove(const char* materialText)
+{
+    INFO(D << "D " << materialText);
+    test::SchemeFixture<D> f(test::schemeCloud<D>(7), kElasticState, materialText, false,
+                             test::schemeHOverDx<D>());
+    const auto x1 = test::deformCurrent<D>(f.ref.x, 17);
+    REQUIRE(f.commit(x1) > 0.0);
+    REQUIRE(f.moveReference(x1).ok());
+    const auto x2 = step<D>(x1, 0.02, 3);
+    REQUIRE(f.commit(x2) > 0.0);
+    REQUIRE(f.moveReference(x2).ok());
+    for (const auto& K : f.ref.K)
+    {
+        CHECK(K.slice[0].norm() == 0.0);
+    }
+    const auto x3 = step<D>(x2, 0.02, 4);
+    ForceStatus status;
+    const auto T = f.forces(x3, &status);
+    REQUIRE(status.ok());
+    Vec<D> total = Vec<D>::Zero();
+    double sum = 0.0;
+    for (const auto& t : T)
+    {
+        total += t;
+        sum += t.norm();
+    }
+    CHECK(total.cwiseAbs().maxCoeff() < 1e-13 * sum);
+    CHECK(test::largestForceError(f, x3, T) / largestComponent<D>(T) < 1e-6);
+}
+
+// Two runs whose current configurations differ by a rotation Q (the initial one is the same):
+// commit, move, commit, move and evaluate. Forces rotate, energy and dissipation do not change.
+template <int D>
+void objectivity()
+{
+    const auto run = [](const Mat<D>& Q, std::vector<Vec<D>>& T, double& energy, double& dissipated)
+    {
+        test::SchemeFixture<D> f(test::schemeCloud<D>(7), kElasticState, kPlastic, false,
+                                 test::schemeHOverDx<D>());
+        const auto x1 = test::deformCurrent<D>(f.ref.x, 17);
+        const auto x2 = step<D>(x1, 0.02, 3);
+        const auto x3 = step<D>(x2, 0.02, 4);
+        dissipated = f.commit(mapped<D>(Q, x1));
+        REQUIRE(f.moveReference(mapped<D>(Q, x1)).ok());
+        dissipated += f.commit(mapped<D>(Q, x2));
+        REQUIRE(f.moveReference(mapped<D>(Q, x2)).ok());
+        T = f.forces(mapped<D>(Q, x3));
+        energy = f.energy(mapped<D>(Q, x3));
+    };
+    Mat<D> Q = Mat<D>::Identity();
+    if constexpr (D == 2)
+    {
+        Q = Eigen::Rotation2Dd(0.7).toRotationMatrix();
+    }
+    else
+    {
+        Q = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    }
+    std::vector<Vec<D>> T0, T1;
+    double e0, e1, d0, d1;
+    run(Mat<D>::Identity(), T0, e0, d0);
+    run(Q, T1, e1, d1);
+    REQUIRE(d0 > 0.0);
+    CHECK(e1 == Approx(e0).epsilon(1e-11));
+    CHECK(d1 == Approx(d0).epsilon(1e-11));
+    double difference = 0.0;
+    for (std::size_t a = 0; a < T0.size(); ++a)
+    {
+        difference = std::max(difference, (T1[a] - Q * T0[a]).cwiseAbs().maxCoeff());
+    }
+    CHECK(difference < 1e-10 * largestComponent<D>(T0));
+}
+
+// Forces of ownHistory (the paper's kinematics, K carried) and elasticState after the same
+// moves, relative to the largest force, over the particles at least `margin` from the cloud's
+// edge.
+template <int D>
+double differenceFromPaper(const std::vector<Vec<D>>& cloud, const std::vector<std::vector<Vec<D>>>& path,
+                           double hOverDx, double margin, double spacing)
+{
+    const auto forcesAfter = [&](const char* schemeText)
+    {
+        test::SchemeFixture<D> f(cloud, schemeText, kElasticJ2, false, hOverDx);
+        f.kernel = test::makeKernel("cubicSpline", D, spacing, hOverDx);
+        f.ref.rebuild(*f.kernel, f.body, f.scheme->referenceNeeds(*f.kernel).searchRadius);
+        REQUIRE(f.scheme->prepare(f.ref).ok());
+        for (std::size_t i = 0; i + 1 < path.size(); ++i)
+        {
+            f.forces(path[i]);
+            REQUIRE(f.moveReference(path[i]).ok());
+        }
+        return f.forces(path.back());
+    };
+    const auto paper = forcesAfter("type gradF;");
+    const auto ours = forcesAfter(kElasticState);
+    Vec<D> lo = cloud[0], hi = cloud[0];
+    for (const auto& p : cloud)
+    {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    double difference = 0.0, scale = 0.0;
+    for (std::size_t a = 0; a < cloud.size(); ++a)
+    {
+        if (((cloud[a] - lo).minCoeff() < margin) || ((hi - cloud[a]).minCoeff() < margin))
+        {
+            continue;
+        }
+        difference = std::max(difference, (ours[a] - paper[a]).norm());
+        scale = std::max(scale, paper[a].norm());
+    }
+    REQUIRE(scale > 0.0);
+    return difference / scale;
+}
+
+} // namespace
+
+TEST_CASE("gradF elasticState: a rebased sample state keeps its elastic state (G4.1)",
+          "[plasticity][gradF]")
+{
+    test::loadModelLibraries();
+    rebaseKeepsTheElasticState<2>(kPlastic);
+    rebaseKeepsTheElasticState<3>(kPlastic);
+    rebaseKeepsTheElasticState<2>(kDP);
+    rebaseKeepsTheElasticState<3>(kDP);
+}
+
+TEST_CASE("gradF elasticState: a reference move changes Pi only through the weights (G4.2)",
+          "[plasticity][gradF]")
+{
+    test::loadModelLibraries();
+    moveChangesOnlyTheWeights<2>(kPlastic);
+    moveChangesOnlyTheWeights<3>(kPlastic);
+    moveChangesOnlyTheWeights<2>(kDP);
+}
+
+TEST_CASE("gradF elasticState: after moves K = 0, force = -dPi/dx, momentum conserved",
+          "[plasticity][gradF]")
+{
+    test::loadModelLibraries();
+    forceAfterAMove<2>(kPlastic);
+    forceAfterAMove<3>(kPlastic);
+    forceAfterAMove<2>(kDP);
+}
+
+TEST_CASE("gradF elasticState: objective (a rotated, yielded configuration rotates the forces)",
+          "[plasticity][gradF]")
+{
+    test::loadModelLibraries();
+    objectivity<2>();
+    objectivity<3>();
+}
+
+// Affine: every sample is F_a in both schemes, moves included (round-off). Smooth: the same
+// quadratic motion on a cloud of spacing 1 and 1/2 over the same square; the difference falls
+// at second order with the spacing (theory §G3).
+TEST_CASE("gradF elasticState: the paper's gradF for affine motion, and to second order for "
+          "smooth motion",
+          "[plasticity][gradF]")
+{
+    test::loadModelLibraries();
+    const auto cloud = test::lattice<2>(7, 0.2, 5);
+    std::vector<std::vector<Vec<2>>> path;
+    for (const double s : {0.03, 0.06, 0.08})
+    {
+        path.push_back(mapped<2>(affine<2>(s, 2), cloud));
+    }
+    CHECK(differenceFromPaper<2>(cloud, path, 1.4, -1.0, 1.0) < 1e-10);
+
+    std::vector<double> differences;
+    for (const int refine : {1, 2})
+    {
+        const double spacing = 1.0 / refine;
+        auto fine = test::lattice<2>(12 * refine + 1, 0.1, 7);
+        for (auto& p : fine)
+        {
+            p *= spacing;
+        }
+        const auto quadratic = [&](double s)
+        {
+            std::vector<Vec<2>> x(fine.size());
+            for (std::size_t a = 0; a < fine.size(); ++a)
+            {
+                const Vec<2> X = fine[a];
+                x[a] = X + s * Vec<2>(0.02 * X[0] * X[0] + 0.01 * X[0] * X[1], -0.015 * X[1] * X[1]);
+            }
+            return x;
+        };
+        std::vector<std::vector<Vec<2>>> smooth;
+        for (const double s : {0.5, 1.0, 1.5})
+        {
+            smooth.push_back(quadratic(s));
+        }
+        differences.push_back(differenceFromPaper<2>(fine, smooth, 1.4, 3.0, spacing));
+    }
+    INFO("relative force difference at spacing 1 and 1/2: " << differences[0] << ", "
+                                                            << differences[1]);
+    CHECK(differences[0] < 0.05);
+    CHECK(differences[1] < differences[0] / 3.0);
+}
+
+// Every sample F_b(a) = F_a + G_a x^r_ba at a step's motion from a moved reference has
+// det > 0, on a cloud distorted by a large, rough motion (a random part of 0.05 spacings per
+// step), boundary particles (one-sided neighbourhoods) included. The paper's kinematics, whose
+// K carries the gradient of that rough motion from move to move, is measured alongside.
+template <int D>
+double smallestSampleDeterminant(const char* schemeText, int moves)
+{
+    test::SchemeFixture<D> f(test::schemeCloud<D>(7), schemeText, kPlastic, false,
+                             test::schemeHOverDx<D>());
+    auto& scheme = dynamic_cast<GradF<D>&>(*f.scheme);
+    auto x = test::deformCurrent<D>(f.ref.x, 17);
+    for (int s = 0; s < moves; ++s)
+    {
+        f.commit(x);
+        if (!f.moveReference(x).ok())
+        {
+            return -1.0; // a particle inverted at the move
+        }
+        x = step<D>(x, 0.05, 10 + static_cast<unsigned>(s));
+    }
+    double smallest = 1e300;
+    for (std::size_t a = 0; a < x.size(); ++a)
+    {
+        const auto kin = scheme.kinematics(a, x, f.ref);
+        for (std::size_t k = f.ref.neighbours.begin(a); k < f.ref.neighbours.end(a); ++k)
+        {
+            const std::size_t b = f.ref.neighbours.indices[k];
+            const Mat<D> sample = kin.F + kin.G.contract(Vec<D>(f.ref.x[b] - f.ref.x[a]));
+            smallest = std::min(smallest, sample.determinant() / kin.F.determinant());
+        }
+    }
+    return smallest;
+}
+
+TEST_CASE("gradF elasticState: admissible samples on distorted and one-sided neighbourhoods",
+          "[plasticity][gradF]")
+{
+    test::loadModelLibraries();
+    for (const int moves : {4, 12})
+    {
+        const double ours = smallestSampleDeterminant<2>(kElasticState, moves);
+        const double paper = smallestSampleDeterminant<2>("type gradF;", moves);
+        INFO(moves << " moves: smallest det F_b(a) / det F_a, elasticState " << ours
+                   << ", the paper's kinematics " << paper);
+        CHECK(ours > 0.0);
+        if (moves == 12)
+        {
+            CHECK(paper < 0.0); // the failure of §G1: the check can tell the two apart
+        }
+    }
+    CHECK(smallestSampleDeterminant<3>(kElasticState, 4) > 0.0);
+}
+
+// The solver's diagnosis of a failed run names what to try next given the scheme that failed:
+// never the scheme itself.
+TEST_CASE("a failed run's hint never suggests the scheme in use", "[gradF][failure]")
+{
+    test::loadModelLibraries();
+    const auto kernel = test::makeKernel("cubicSpline", 2, 1.0, 1.4);
+    const auto hint = [&](const std::string& text, bool updated, bool plastic)
+    { return test::build<Stabilisation<2>>(text, {kernel.get()}, 2)->nextToTry(updated, plastic); };
+    CHECK(hint("type none;", true, true).find("stabilisation gradF") != std::string::npos);
+    CHECK(hint("type none;", false, false).find("stabilisation gradF") != std::string::npos);
+    for (const bool plastic : {false, true})
+    {
+        for (const bool updated : {false, true})
+        {
+            CHECK(hint("type gradF;", updated, plastic).find("stabilisation gradF") ==
+                  std::string::npos);
+            CHECK(hint(kElasticState, updated, plastic).find("elasticState") == std::string::npos);
+        }
+    }
+    CHECK(hint("type gradF;", true, true).find("plasticSamples elasticState") != std::string::npos);
+    CHECK(hint("type gradF;", true, false).find("totalLagrangian") != std::string::npos);
+    CHECK(hint("type gradF;", false, true).empty()); // TL gradF: no scheme to switch to
+}
