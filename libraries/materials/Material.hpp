@@ -157,6 +157,9 @@ public:
         (void)from;
         (void)to;
     }
+    // The registry fields rebaseParticleHistory() changes (a distributed run refreshes its
+    // ghosts' from their owners after a move).
+    virtual std::vector<std::string> rebasedFields() const { return {}; }
     virtual double commit(const Mat<D>* F, const double* V0, std::size_t first, std::size_t n)
     {
         (void)F;

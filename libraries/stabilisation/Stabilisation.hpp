@@ -207,6 +207,9 @@ public:
         (void)materials;
     }
 
+    // Whether moveHistory() changes the materials' own (per-particle) history.
+    virtual bool movesParticleHistory() const { return false; }
+
     // What to try next when a run with this scheme fails (the solver's diagnosis): a scheme
     // that cannot help itself names another; `updated`: the reference moves, `plastic`: some
     // material keeps a plastic history.

@@ -193,6 +193,13 @@ endforeach()
 sph_add_solver_run("plastic impact UL gradF linearised bit-identical on 2 ranks" 2 ${sphImpact}
                    bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
                    ${sphImpactUL} -set stabilisation.plasticSamples=linearised)
+# plasticSamples elasticState (docs/theory/gradF-plastic.md): the samples' states rebased at every
+# move, new pairs started from the neighbour's state (a ghost's, at a rank's edge), F^r the
+# dilation; with the moves' energy tabulated (a collective energy evaluation before each move).
+sph_add_solver_run("plastic impact UL gradF elasticState bit-identical on 2 ranks" 2 ${sphImpact}
+                   bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
+                   ${sphImpactUL} -set stabilisation.plasticSamples=elasticState
+                   -set controlDict.functions.energy.referenceMoves=yes)
 # The samples' states travel through the output's pieces: written on 2 ranks, continued on 3
 # and serially.
 foreach(second 3 1)
@@ -204,6 +211,7 @@ foreach(test "plastic impact bit-identical on 2 ranks" "plastic impact bit-ident
              "plastic impact UL gradF per-sample history bit-identical on 2 ranks"
              "plastic impact UL gradF per-sample history bit-identical on 3 ranks"
              "plastic impact UL gradF linearised bit-identical on 2 ranks"
+             "plastic impact UL gradF elasticState bit-identical on 2 ranks"
              "plastic impact UL gradF restart from 2 on 3 ranks bit-identical"
              "plastic impact UL gradF restart from 2 on 1 ranks bit-identical")
     set_property(TEST "parallel:sphSolid ${test}" APPEND PROPERTY ENVIRONMENT

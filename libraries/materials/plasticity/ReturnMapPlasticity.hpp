@@ -90,6 +90,10 @@ public:
         s.inversePlastic = 0.5 * (Cp + Cp.transpose());
         s.pack(packed);
     }
+    std::vector<std::string> rebasedFields() const override
+    {
+        return {PlasticHistory<D>::fields().front().name()}; // Cp⁻¹ (zz and α do not change)
+    }
     void rebaseParticleHistory(std::size_t a, const Mat<D>& from, const Mat<D>& to) override
     {
         double packed[State::packedSize];

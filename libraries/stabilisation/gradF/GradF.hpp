@@ -70,6 +70,7 @@ public:
                      const std::vector<int>& body,
                      const std::vector<Material<D>*>& materials) override;
     double commitHistory(const HistoryCommit<D>& in) override;
+    bool movesParticleHistory() const override { return elasticState_; }
     std::string nextToTry(bool updated, bool plastic) const override
     {
         if (updated && plastic && !elasticState_)

@@ -151,18 +151,19 @@ TEST_CASE("restart continues bit-identically: 2D block against walls", "[restart
           test::summaryValue(split, "functions/walls/pusher_peakNormalForce"));
 }
 
-TEST_CASE("restart continues bit-identically: 2D plastic impact, updated-Lagrangian gradF",
-          "[restart][plasticity]")
+// The plasticity2D/impact tutorial (1296 particles), stopped after 60 steps (flowing
+// plastically against the wall) and continued: the plastic history (Cp^-1, alpha, committed
+// after each output; gradF's per-sample states), the dissipated energy and every table continue
+// bit for bit. `extra`: further settings of both runs.
+static void plasticImpactRestart(const std::vector<std::string>& extra)
 {
-    // The plasticity2D/impact tutorial (1296 particles), stopped after 60 steps
-    // (flowing plastically against the wall) and continued: the plastic history (Cp^-1, alpha,
-    // committed after each output), the dissipated energy and every table continue bit for bit.
     test::TempDir one;
     test::TempDir two;
     const auto whole = test::copyTutorial("plasticity2D/impact", one.path());
     const auto split = test::copyTutorial("plasticity2D/impact", two.path());
-    const std::vector<std::string> schemes{"-set", "formulation.type=updatedLagrangian", "-set",
-                                           "stabilisation.type=gradF", "-set", "endTime=4e-6"};
+    std::vector<std::string> schemes{"-set", "formulation.type=updatedLagrangian", "-set",
+                                     "stabilisation.type=gradF", "-set", "endTime=4e-6"};
+    schemes.insert(schemes.end(), extra.begin(), extra.end());
     for (const auto& dir : {whole, split})
     {
         REQUIRE(test::runParticles(dir) == 0);
@@ -185,4 +186,20 @@ TEST_CASE("restart continues bit-identically: 2D plastic impact, updated-Lagrang
         CHECK(fileText(whole / "postProcessing" / table / (table + ".dat")) ==
               fileText(split / "postProcessing" / table / (table + ".dat")));
     }
+}
+
+TEST_CASE("restart continues bit-identically: 2D plastic impact, updated-Lagrangian gradF",
+          "[restart][plasticity]")
+{
+    plasticImpactRestart({});
+}
+
+// The samples' states rebased at every move, F^r the dilation, and the moves' energy columns
+// (restart scalars) continue bit for bit too.
+TEST_CASE("restart continues bit-identically: 2D plastic impact, gradF elasticState with the "
+          "moves' energy",
+          "[restart][plasticity]")
+{
+    plasticImpactRestart({"-set", "stabilisation.plasticSamples=elasticState", "-set",
+                          "controlDict.functions.energy.referenceMoves=yes"});
 }
