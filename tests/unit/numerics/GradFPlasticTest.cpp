@@ -489,3 +489,32 @@ TEST_CASE("a failed run's hint never suggests the scheme in use", "[gradF][failu
     CHECK(hint("type gradF;", true, false).find("totalLagrangian") != std::string::npos);
     CHECK(hint("type gradF;", false, true).empty()); // TL gradF: no scheme to switch to
 }
+
+// The paper's elastic scheme is untouched: with an elastic material (no history) elasticState
+// carries K and F^r as the paper's gradF does, through moves, bit for bit.
+TEST_CASE("gradF elasticState: an elastic material gives the paper's gradF bit for bit",
+          "[gradF]")
+{
+    test::loadModelLibraries();
+    const char* elastic = "type neoHookean; mu 1; kappa 5; rho 1;";
+    std::vector<std::vector<Vec<2>>> T;
+    for (const char* scheme : {"type gradF;", kElasticState})
+    {
+        test::SchemeFixture<2> f(test::schemeCloud<2>(7), scheme, elastic, false, 1.4);
+        auto x = test::deformCurrent<2>(f.ref.x, 17);
+        for (unsigned s = 0; s < 3; ++s)
+        {
+            f.forces(x);
+            REQUIRE(f.moveReference(x).ok());
+            x = step<2>(x, 0.02, 20 + s);
+        }
+        T.push_back(f.forces(x));
+        double K = 0.0;
+        for (const auto& k : f.ref.K)
+        {
+            K = std::max(K, k.slice[0].norm() + k.slice[1].norm());
+        }
+        CHECK(K > 0.0); // K is carried
+    }
+    CHECK(T[0] == T[1]);
+}
