@@ -4,6 +4,7 @@
 #include "solver/Simulation.hpp"
 
 #include "core/InputError.hpp"
+#include "core/PlainName.hpp"
 #include "core/Suggest.hpp"
 #include "initialConditions/fields/Fields.hpp"
 #include "initialConditions/regions/Region.hpp"
@@ -221,6 +222,8 @@ void Simulation<D>::setupFunctionObjects()
                              {"Valid function object types: " +
                               joinSorted(Registry<FunctionObject<D>>::names())});
         }
+        // Its name becomes postProcessing/<name>/ and the names of the files in it.
+        requirePlainName(entry, "function object", "folder and file names under postProcessing/");
         typename FunctionObject<D>::Args args;
         args.name = entry.key();
         args.caseDir = dicts_.caseDir();

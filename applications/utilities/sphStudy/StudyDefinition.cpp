@@ -2,6 +2,7 @@
 #include "StudyMetric.hpp"
 
 #include "core/InputError.hpp"
+#include "core/PlainName.hpp"
 #include "core/Schema.hpp"
 #include "core/Suggest.hpp"
 
@@ -159,27 +160,10 @@ void readRestrictions(const Dictionary& axesDict, StudyDefinition& study)
 }
 
 // Axis, level and metric names become folder and file names (runs/<variant>, plot/<line>.dat)
-// and text in the generated gnuplot script: only plain names, so that none can leave the study
-// folder or end a quoted string.
+// and text in the generated gnuplot script.
 void checkPlainName(const Entry& entry, const std::string& what)
 {
-    const std::string& name = entry.key();
-    const auto plain = [](char c)
-    {
-        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '+' ||
-               c == '-';
-    };
-    const bool ok = !name.empty() && name.size() <= 64 &&
-                    (std::isalnum(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
-                    std::all_of(name.begin(), name.end(), plain);
-    if (!ok)
-    {
-        throw InputError(entry.keyLocation(),
-                         what + " '" + name + "' is not a plain name: it is used in folder, file "
-                                              "and plot names",
-                         {"Use letters, digits and _ . + - (at most 64, starting with a letter, "
-                          "a digit or _), e.g. dx0.5mm or ULgradF."});
-    }
+    requirePlainName(entry, what, "folder, file and plot names");
 }
 
 } // namespace
