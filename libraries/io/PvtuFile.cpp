@@ -100,12 +100,23 @@ VtuData readPvtu(const std::filesystem::path& file, const std::string& orderBy)
     {
         refuse(error.message());
     }
+    // (A child looked up with a default would be a reference to that temporary default.)
+    const auto grid = root.get_child_optional("VTKFile.PUnstructuredGrid");
+    if (!grid)
+    {
+        refuse("it holds no <VTKFile><PUnstructuredGrid> (an empty or damaged file)");
+    }
     std::vector<std::filesystem::path> pieces;
-    for (const auto& [tag, piece] : root.get_child("VTKFile.PUnstructuredGrid", pt::ptree()))
+    for (const auto& [tag, piece] : *grid)
     {
         if (tag == "Piece")
         {
-            pieces.push_back(file.parent_path() / piece.get<std::string>("<xmlattr>.Source", ""));
+            const std::string source = piece.get<std::string>("<xmlattr>.Source", "");
+            if (source.empty())
+            {
+                refuse("a <Piece> names no Source file");
+            }
+            pieces.push_back(file.parent_path() / source);
         }
     }
     if (pieces.empty())

@@ -6,6 +6,7 @@
 #include "solver/StateFile.hpp"
 #include "support/TestSupport.hpp"
 
+#include <fstream>
 #include <random>
 
 using namespace sph;
@@ -344,5 +345,25 @@ TEST_CASE("the state file restores a ragged field whole and from the pieces of a
         writeVtu(dir.path() / pieces[1], damaged);
         CHECK_THROWS_WITH(readPvtu(dir.path() / "run_0.pvtu", "globalId"),
                           Catch::Contains("cannot read") && Catch::Contains("'restart:samples'"));
+    }
+}
+
+// An empty .pvtu, a well-formed one without <PUnstructuredGrid>, a piece without a Source: each
+// an input error naming the file (an empty one crashed a latestTime restart, issue 31).
+TEST_CASE("a damaged .pvtu is refused with its name, not read", "[output][distributed]")
+{
+    test::TempDir dir;
+    const auto write = [&](const std::string& text)
+    {
+        std::ofstream(dir.path() / "run_1.pvtu") << text;
+        return dir.path() / "run_1.pvtu";
+    };
+    for (const std::string& text :
+         {std::string(), std::string("<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\"/>\n"),
+          std::string("<VTKFile><PUnstructuredGrid><Piece/></PUnstructuredGrid></VTKFile>\n")})
+    {
+        INFO("'" << text << "'");
+        CHECK_THROWS_WITH(readPvtu(write(text), "globalId"),
+                          Catch::Contains("cannot read") && Catch::Contains("run_1.pvtu"));
     }
 }

@@ -9,6 +9,7 @@
 
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <limits>
 
 using namespace sph;
@@ -224,4 +225,26 @@ TEST_CASE("vtu import: a point set with NaN or a non-positive volume is an input
     // Far out but finite: the bodies are checked together, before sphParticles writes them.
     importWith([](VtuData& d) { d.points[3 * 4] = 1e308; },
                {"system/particlesDict: particle 4 has x = 1e+308", "Check the bodies' positions"});
+}
+
+// A negative point count in the XML header reached VTK's reader unchecked and crashed it
+// (issue 31): sphSolid -dryRun and a restart from such an output now stop with the file named.
+TEST_CASE("particle file: a negative NumberOfPoints is an input error, not a crash",
+          "[particleFile]")
+{
+    test::TempDir dir;
+    const auto caseDir = writeBar(dir.path() / "bar");
+    const auto file = caseDir / "constant" / "particles.vtu";
+    std::string text;
+    {
+        std::ifstream in(file, std::ios::binary);
+        text.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    const auto at = text.find("NumberOfPoints=\"");
+    REQUIRE(at != std::string::npos);
+    const auto end = text.find('"', at + 16);
+    text.replace(at, end - at + 1, "NumberOfPoints=\"-5\"");
+    std::ofstream(file, std::ios::binary) << text;
+    requireInputFailure("sphSolid", caseDir, {"-dryRun"},
+                        {"particles.vtu': its NumberOfPoints is \"-5\", not a whole number >= 0"});
 }
