@@ -36,6 +36,7 @@ public:
         {
             p.fail("outerRadius", "annulus: 'outerRadius' must exceed 'innerRadius'");
         }
+        checkLatticeSize<D>(p, "annulus", Vec<D>::Constant(2.0 * outer_), spacing_);
     }
     GeneratedBody<D> generate() const override
     {

@@ -35,6 +35,7 @@ public:
             p.fail("max", "box: 'max' must be greater than 'min' in every component",
                    {"min is the lower corner, max the upper one."});
         }
+        checkLatticeSize<D>(p, "box", max_ - min_, spacing_);
         for (int d = 0; d < D; ++d)
         {
             const double cells = (max_[d] - min_[d]) / spacing_;

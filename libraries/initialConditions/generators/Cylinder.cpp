@@ -37,6 +37,7 @@ public:
             p.fail("axis", "cylinder: 'axis' must not be the zero vector");
         }
         axis_.normalize();
+        checkLatticeSize<D>(p, "cylinder", Vec<D>::Constant(2.0 * (length_ + radius_)), spacing_);
     }
     GeneratedBody<D> generate() const override
     {

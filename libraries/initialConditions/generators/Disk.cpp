@@ -27,6 +27,7 @@ public:
         : centre_(toVec<D>(p.vector("centre"))), radius_(p.real("radius")),
           spacing_(p.real("spacing"))
     {
+        checkLatticeSize<D>(p, "disk", Vec<D>::Constant(2.0 * radius_), spacing_);
     }
     GeneratedBody<D> generate() const override
     {

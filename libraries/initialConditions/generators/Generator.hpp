@@ -9,8 +9,13 @@
 // every particle gets the volume spacing^dim (line: half volumes at the ends by default, so
 // the volumes tile the bar exactly).
 
+#include "core/Format.hpp"
 #include "core/Registry.hpp"
 #include "particles/Types.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
 
 #include <filesystem>
 #include <functional>
@@ -19,6 +24,35 @@
 
 namespace sph
 {
+
+// Refuses (at `spacing`, with the file:line of the key) a lattice of that spacing over a
+// bounding box of `extent` whose point count a run could not hold: more than 2^31 particles,
+// or more memory than this machine has at the few kB per particle a run needs (a spacing of
+// 1e-300 made sphParticles spin for ever; issue 31). `shape` names the generator.
+template <int D>
+void checkLatticeSize(const Params& p, const std::string& shape, const Vec<D>& extent,
+                      double spacing)
+{
+    double count = 1.0;
+    for (int d = 0; d < D; ++d)
+    {
+        count *= std::floor(std::abs(extent[d]) / spacing) + 1.0;
+    }
+    const double bytesPerParticle = 4096.0; // a 3D updated-Lagrangian gradF run: ~3.6 kB
+    const double pages = static_cast<double>(sysconf(_SC_PHYS_PAGES));
+    const double memory = pages * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+    if (!(count <= 2147483647.0) || !(count * bytesPerParticle <= memory))
+    {
+        p.fail("spacing",
+               shape + ": spacing " + formatNumber(spacing) + " m makes about " +
+                   formatScientific(count) + " particles, which need about " +
+                   formatScientific(count * bytesPerParticle / 1073741824.0) +
+                   " GiB to run (this machine has " + formatNumber(memory / 1073741824.0) +
+                   " GiB)",
+               {"Choose a larger spacing: the particle count grows as (size / spacing)^" +
+                std::to_string(D) + "."});
+    }
+}
 
 template <int D>
 struct GeneratedBody
