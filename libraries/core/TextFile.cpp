@@ -45,6 +45,14 @@ std::string unreadableReason(const std::filesystem::path& path)
 std::string readTextFile(const std::filesystem::path& path, const std::string& what,
                          std::vector<std::string> notes)
 {
+    // Every file a case names goes through here: a device (/dev/zero, read until memory runs
+    // out), a FIFO (blocks for ever) or a folder is refused before it is opened.
+    const std::string reason = unreadableReason(path);
+    if (!reason.empty())
+    {
+        throw InputError("cannot read " + what + " '" + path.string() + "': " + reason,
+                         std::move(notes));
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in)
     {

@@ -2,6 +2,7 @@
 
 #include "core/InputError.hpp"
 #include "core/Suggest.hpp"
+#include "core/TextFile.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -96,10 +97,16 @@ bool DatTable::hasColumn(const std::string& name) const
 
 DatTable readDatTable(const std::filesystem::path& file, DatHeader header)
 {
-    std::ifstream in(file);
-    if (!in)
+    const std::string reason = unreadableReason(file);
+    std::ifstream in;
+    if (reason.empty())
     {
-        throw InputError("cannot read the table '" + file.string() + "'",
+        in.open(file);
+    }
+    if (!reason.empty() || !in)
+    {
+        throw InputError("cannot read the table '" + file.string() + "'" +
+                             (reason.empty() ? std::string() : ": " + reason),
                          {"Function objects write postProcessing/<name>/<name>.dat while the "
                           "case runs; did the run start, and is the function object's name "
                           "right?"});

@@ -264,6 +264,14 @@ private:
     }
     void readReference(const std::filesystem::path& file, const Params& params)
     {
+        const std::string reason = unreadableReason(file);
+        if (!reason.empty())
+        {
+            params.fail("reference", "surfaceProfile: cannot read the reference profile '" +
+                                         file.string() + "': " + reason,
+                        {"It is a text file of x y points (',' or blanks), named relative to "
+                         "the case folder."});
+        }
         const std::string text = readTextFile(file, "reference profile", {});
         std::istringstream lines(text);
         std::string line;

@@ -4,6 +4,8 @@
 // clean errors for a missing or garbled reference file.
 #include "solver/SolverCases.hpp"
 
+#include <sys/stat.h>
+
 using namespace sph;
 
 namespace
@@ -101,5 +103,27 @@ TEST_CASE("surfaceProfile: a missing or garbled reference is an input error at i
     REQUIRE(test::runParticles(missing) == 0);
     output.clear();
     CHECK(test::runProcess("sphSolid", {"-case", missing.string(), "-dryRun"}, &output) == 1);
-    CHECK_THAT(output, Catch::Contains("cannot read reference profile") && Catch::Contains("ref.csv"));
+    CHECK_THAT(output, Catch::Contains("system/controlDict:6:") &&
+                           Catch::Contains("cannot read the reference profile") &&
+                           Catch::Contains("ref.csv': no such file"));
+    // Not a regular file: a device is read until memory runs out, a FIFO blocks for ever
+    // (issue 31): both refused before they are opened.
+    for (const std::string kind : {"device", "fifo"})
+    {
+        const auto special = writeProfileCase(dir.path() / kind, "");
+        std::filesystem::remove(special / "ref.csv");
+        if (kind == "device")
+        {
+            std::filesystem::create_symlink("/dev/zero", special / "ref.csv");
+        }
+        else
+        {
+            REQUIRE(mkfifo((special / "ref.csv").c_str(), 0600) == 0);
+        }
+        REQUIRE(test::runParticles(special) == 0);
+        output.clear();
+        CHECK(test::runProcess("sphSolid", {"-case", special.string(), "-dryRun"}, &output) == 1);
+        CHECK_THAT(output, Catch::Contains("system/controlDict:6:") &&
+                               Catch::Contains("ref.csv': it is not a regular file"));
+    }
 }
