@@ -1,5 +1,6 @@
 #include "io/PvtuFile.hpp"
 
+#include "core/Format.hpp"
 #include "core/InputError.hpp"
 #include "io/AtomicFile.hpp"
 
@@ -139,6 +140,26 @@ VtuData readPvtu(const std::filesystem::path& file, const std::string& orderBy)
                 }
             }
             continue;
+        }
+        // The pieces of one output are one level: the same time and step in each (a piece
+        // left from another level would restart a mixture, issue 31).
+        for (const std::string level : {"TimeValue", "restart:step"})
+        {
+            const auto first = joined.fieldData.find(level);
+            const auto here = piece.fieldData.find(level);
+            if ((first == joined.fieldData.end()) != (here == piece.fieldData.end()) ||
+                (first != joined.fieldData.end() && first->second.values != here->second.values))
+            {
+                const auto text = [](const auto& it, const auto& end) {
+                    return it == end || it->second.values.empty()
+                               ? std::string("none")
+                               : formatNumber(it->second.values[0], 17);
+                };
+                refuse("its pieces are of different levels: " + level + " " +
+                       text(first, joined.fieldData.end()) + " in '" + pieces[0].string() +
+                       "', " + text(here, piece.fieldData.end()) + " in '" + pieces[i].string() +
+                       "'");
+            }
         }
         for (const std::string& arrayName : ragged)
         {

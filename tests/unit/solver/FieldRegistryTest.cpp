@@ -339,6 +339,18 @@ TEST_CASE("the state file restores a ragged field whole and from the pieces of a
         const VtuData joined = readPvtu(dir.path() / "run_0.pvtu", "globalId");
         check(joined, "run_0.pvtu");
 
+        // A piece of another level (another time): refused, not joined (issue 31).
+        {
+            VtuData other = readVtu(dir.path() / pieces[1]);
+            const VtuData kept = other;
+            other.fieldData.at("TimeValue").values[0] += 0.005;
+            writeVtu(dir.path() / pieces[1], other);
+            CHECK_THROWS_WITH(readPvtu(dir.path() / "run_0.pvtu", "globalId"),
+                              Catch::Contains("cannot read") &&
+                                  Catch::Contains("its pieces are of different levels: TimeValue"));
+            writeVtu(dir.path() / pieces[1], kept);
+        }
+
         // A piece whose entries do not match its counts.
         VtuData damaged = readVtu(dir.path() / pieces[1]);
         damaged.fieldData.at("restart:samples").values.resize(3);
