@@ -1,6 +1,7 @@
 #include "io/PvdSeries.hpp"
 
 #include "core/InputError.hpp"
+#include "core/TextFile.hpp"
 #include "io/AtomicFile.hpp"
 
 #include <boost/property_tree/ptree.hpp>
@@ -20,9 +21,16 @@ PvdSeries::PvdSeries(std::filesystem::path file) : file_(std::move(file)) {}
 void PvdSeries::load()
 {
     entries_.clear();
-    if (!std::filesystem::exists(file_))
+    std::error_code ec; // (the throwing overloads report a link loop as an internal error)
+    if (std::filesystem::status(file_, ec).type() == std::filesystem::file_type::not_found)
     {
         return;
+    }
+    const std::string reason = unreadableReason(file_);
+    if (!reason.empty())
+    {
+        throw InputError("cannot read the time series '" + file_.string() + "': " + reason,
+                         {"Delete it (and the VTK folder) to start the run afresh."});
     }
     pt::ptree tree;
     try

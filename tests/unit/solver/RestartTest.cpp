@@ -203,3 +203,22 @@ TEST_CASE("restart continues bit-identically: 2D plastic impact, gradF elasticSt
     plasticImpactRestart({"-set", "stabilisation.plasticSamples=elasticState", "-set",
                           "controlDict.functions.energy.referenceMoves=yes"});
 }
+
+// A .pvd that is a link to itself (a loop) gave "FATAL ERROR (internal) filesystem error";
+// a restart now names the file and the reason (issue 31).
+TEST_CASE("restart: a time series that links to itself is an input error", "[restart][errors]")
+{
+    test::TempDir dir;
+    const auto caseDir = test::copyTutorial("bar1D/dykaBar", dir.path());
+    REQUIRE(test::runParticles(caseDir) == 0);
+    std::filesystem::create_directories(caseDir / "VTK");
+    std::filesystem::create_symlink("dykaBar.pvd", caseDir / "VTK" / "dykaBar.pvd");
+    std::string output;
+    CHECK(test::runProcess("sphSolid", {"-case", caseDir.string(), "-set",
+                                        "controlDict.startFrom=latestTime"},
+                           &output) == 1);
+    INFO(output);
+    CHECK_THAT(output, Catch::Contains("FATAL INPUT ERROR") &&
+                           Catch::Contains("dykaBar.pvd': too many levels of symbolic links"));
+    CHECK_THAT(output, !Catch::Contains("internal"));
+}
