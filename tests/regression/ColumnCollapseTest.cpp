@@ -9,15 +9,29 @@
 
 using namespace sph;
 
+namespace
+{
+
+// The tutorial at 1 cm to 1 s, one thread, with `settings` for sphSolid; returns its folder.
+std::filesystem::path runCoarseCollapse(const test::TempDir& dir,
+                                        const std::vector<std::string>& settings)
+{
+    const auto caseDir = test::copyTutorial("geomaterials/columnCollapse", dir.path());
+    REQUIRE(test::runParticles(caseDir, {"-set", "column.spacing=0.01"}) == 0);
+    std::vector<std::string> args{"-threads", "1", "-set", "writeInterval=0.5"};
+    args.insert(args.end(), settings.begin(), settings.end());
+    REQUIRE(test::runSolver(caseDir, args) == 0);
+    return caseDir;
+}
+
+} // namespace
+
 TEST_CASE("column collapse, coarse: TL gradF deposits the column near the measured surface",
           "[geomaterials][columnCollapse]")
 {
     test::TempDir dir;
-    const auto caseDir = test::copyTutorial("geomaterials/columnCollapse", dir.path());
-    REQUIRE(test::runParticles(caseDir, {"-set", "column.spacing=0.01"}) == 0);
-    REQUIRE(test::runSolver(caseDir, {"-threads", "1", "-set", "formulation.type=totalLagrangian",
-                                      "-set", "stabilisation.type=gradF", "-set",
-                                      "writeInterval=0.5"}) == 0);
+    const auto caseDir = runCoarseCollapse(
+        dir, {"-set", "formulation.type=totalLagrangian", "-set", "stabilisation.type=gradF"});
     const double front = test::summaryValue(caseDir, "functions/surface/front");
     const double top = test::summaryValue(caseDir, "functions/surface/top");
     const double distance = test::summaryValue(caseDir, "functions/surface/largestDistance");
@@ -38,11 +52,8 @@ TEST_CASE("column collapse, coarse: UL none completes, its time step does not co
     // With the total-F bound (P2.5) the step fell a hundredfold as the flow sheared the column
     // (5 mm: 1.8e-7 s at 0.55 s); with the stretch since the reference it stays near its start.
     test::TempDir dir;
-    const auto caseDir = test::copyTutorial("geomaterials/columnCollapse", dir.path());
-    REQUIRE(test::runParticles(caseDir, {"-set", "column.spacing=0.01"}) == 0);
-    REQUIRE(test::runSolver(caseDir, {"-threads", "1", "-set", "formulation.type=updatedLagrangian",
-                                      "-set", "stabilisation.type=none", "-set",
-                                      "writeInterval=0.5"}) == 0);
+    const auto caseDir = runCoarseCollapse(
+        dir, {"-set", "formulation.type=updatedLagrangian", "-set", "stabilisation.type=none"});
     const double steps = test::summaryValue(caseDir, "steps");
     const double front = test::summaryValue(caseDir, "functions/surface/front");
     INFO(steps << " steps, front " << front << " m");
@@ -59,12 +70,10 @@ TEST_CASE("column collapse, coarse: UL gradF elasticState completes, near the me
           "[geomaterials][columnCollapse][gradF]")
 {
     test::TempDir dir;
-    const auto caseDir = test::copyTutorial("geomaterials/columnCollapse", dir.path());
-    REQUIRE(test::runParticles(caseDir, {"-set", "column.spacing=0.01"}) == 0);
-    REQUIRE(test::runSolver(caseDir, {"-threads", "1", "-set", "formulation.type=updatedLagrangian",
-                                      "-set", "stabilisation.plasticSamples=elasticState", "-set",
-                                      "controlDict.functions.energy.referenceMoves=yes", "-set",
-                                      "writeInterval=0.5"}) == 0);
+    const auto caseDir = runCoarseCollapse(
+        dir, {"-set", "formulation.type=updatedLagrangian", "-set",
+              "stabilisation.plasticSamples=elasticState", "-set",
+              "controlDict.functions.energy.referenceMoves=yes"});
     const double top = test::summaryValue(caseDir, "functions/surface/top");
     const double distance = test::summaryValue(caseDir, "functions/surface/largestDistance");
     INFO("top " << top << " m, largest distance " << distance << " m");

@@ -69,17 +69,6 @@ std::vector<Vec<D>> step(const std::vector<Vec<D>>& x, double noise, unsigned se
     return y;
 }
 
-template <int D>
-double largestComponent(const std::vector<Vec<D>>& T)
-{
-    double value = 0.0;
-    for (const auto& t : T)
-    {
-        value = std::max(value, t.cwiseAbs().maxCoeff());
-    }
-    return value;
-}
-
 // W at F from one packed state (the samples' evaluation).
 template <int D>
 double sampleEnergy(const Material<D>& material, const Mat<D>& F, const std::vector<double>& state)
@@ -239,7 +228,7 @@ void forceAfterAMove(const char* materialText)
         sum += t.norm();
     }
     CHECK(total.cwiseAbs().maxCoeff() < 1e-13 * sum);
-    CHECK(test::largestForceError(f, x3, T) / largestComponent<D>(T) < 1e-6);
+    CHECK(test::largestForceError(f, x3, T) / test::largestComponent<D>(T) < 1e-6);
 }
 
 // Two runs whose current configurations differ by a rotation Q (the initial one is the same):
@@ -282,7 +271,7 @@ void objectivity()
     {
         difference = std::max(difference, (T1[a] - Q * T0[a]).cwiseAbs().maxCoeff());
     }
-    CHECK(difference < 1e-10 * largestComponent<D>(T0));
+    CHECK(difference < 1e-10 * test::largestComponent<D>(T0));
 }
 
 // Forces of ownHistory (the paper's kinematics, K carried) and elasticState after the same

@@ -257,6 +257,18 @@ struct SchemeFixture
     }
 };
 
+// The largest component of any vector of `T` (forces: the scale of a tolerance).
+template <int D>
+double largestComponent(const std::vector<Vec<D>>& T)
+{
+    double value = 0.0;
+    for (const auto& t : T)
+    {
+        value = std::max(value, t.cwiseAbs().maxCoeff());
+    }
+    return value;
+}
+
 // A non-affine current configuration: x = (I + 0.15 R) x^r + 0.05 sin(x^r·w) + 0.03 noise.
 template <int D>
 std::vector<Vec<D>> deformCurrent(const std::vector<Vec<D>>& xr, unsigned seed)

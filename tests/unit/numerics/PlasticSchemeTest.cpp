@@ -29,17 +29,6 @@ const char* kNonAssociativeDP = "type druckerPrager; E 2.5; nu 0.3; rho 1; frict
                                 "dilatancyAngle 5; cohesion 0.01; tensileStrength 0.005;";
 
 template <int D>
-double largest(const std::vector<Vec<D>>& T)
-{
-    double value = 0.0;
-    for (const auto& t : T)
-    {
-        value = std::max(value, t.cwiseAbs().maxCoeff());
-    }
-    return value;
-}
-
-template <int D>
 void noYieldingIsHencky(const std::string& name, bool updated, const std::string& extra = "",
                         const char* elastic = kElasticJ2)
 {
@@ -49,13 +38,13 @@ void noYieldingIsHencky(const std::string& name, bool updated, const std::string
     const auto x = test::deformCurrent<D>(hencky.ref.x, 17);
     const auto T = hencky.forces(x);
     const auto Tj2 = j2.forces(x);
-    REQUIRE(largest<D>(T) > 1e-3);
+    REQUIRE(test::largestComponent<D>(T) > 1e-3);
     double difference = 0.0;
     for (std::size_t a = 0; a < T.size(); ++a)
     {
         difference = std::max(difference, (T[a] - Tj2[a]).cwiseAbs().maxCoeff());
     }
-    CHECK(difference <= 1e-14 * largest<D>(T));
+    CHECK(difference <= 1e-14 * test::largestComponent<D>(T));
     CHECK(j2.commit(x) == 0.0);
 }
 
@@ -72,7 +61,7 @@ void plasticForces(const std::string& name, bool updated, const std::string& ext
     ForceStatus status;
     const auto T = fixture.forces(x, &status);
     REQUIRE(status.ok());
-    const double maxForce = largest<D>(T);
+    const double maxForce = test::largestComponent<D>(T);
     REQUIRE(maxForce > 1e-3);
     double sumForce = 0.0;
     Vec<D> total = Vec<D>::Zero();
@@ -213,7 +202,7 @@ TEST_CASE("gradF: the linearised evaluation equals the per-sample one for an aff
     {
         difference = std::max(difference, (T[a] - Tlinear[a]).cwiseAbs().maxCoeff());
     }
-    REQUIRE(largest<2>(T) > 1e-3);
-    CHECK(difference <= 1e-9 * largest<2>(T));
+    REQUIRE(test::largestComponent<2>(T) > 1e-3);
+    CHECK(difference <= 1e-9 * test::largestComponent<2>(T));
     REQUIRE(own.commit(x) > 0.0); // it does flow
 }
