@@ -3,8 +3,11 @@
 #include "core/Format.hpp"
 #include "core/InputError.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <regex>
 
 namespace sph
 {
@@ -171,5 +174,38 @@ void VtuChecks::wholeNumbers(const std::string& name, const VtuArray& array, dou
         }
     }
 }
+
+// VTK's XML reader takes a piece's NumberOfPoints and NumberOfCells unchecked (a negative one
+// crashed it, issue 31): they must be whole numbers >= 0, checked in the XML header (the text
+// before any appended binary data) before VTK sees the file.
+void checkVtuPieceSizes(const std::filesystem::path& file)
+{
+    std::ifstream in(file, std::ios::binary);
+    std::string header;
+    std::string chunk(1 << 16, '\0');
+    while (in && header.find("<AppendedData") == std::string::npos && header.size() < (64u << 20))
+    {
+        in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        header.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    }
+    header = header.substr(0, header.find("<AppendedData"));
+    static const std::regex size(R"re((NumberOf(?:Points|Cells))\s*=\s*"([^"]*)")re");
+    for (auto it = std::sregex_iterator(header.begin(), header.end(), size);
+         it != std::sregex_iterator(); ++it)
+    {
+        const std::string value = (*it)[2];
+        const bool whole = !value.empty() && value.size() <= 18 &&
+                           std::all_of(value.begin(), value.end(),
+                                       [](char c) { return c >= '0' && c <= '9'; });
+        if (!whole)
+        {
+            throw InputError("cannot read '" + file.string() + "': its " + std::string((*it)[1]) +
+                                 " is \"" + value + "\", not a whole number >= 0",
+                             {"The file is damaged; write it again (sphParticles, or the run "
+                              "that wrote it)."});
+        }
+    }
+}
+
 
 } // namespace sph

@@ -4,6 +4,7 @@
 
 #include "io/VtuFile.hpp"
 
+#include <filesystem>
 #include <string>
 
 namespace sph
@@ -14,6 +15,11 @@ namespace sph
 // error naming the file, the array and the particle, not a crash deep in the solver (issue 12
 // item 3). Every message starts with `subject` (the file: "constant/particles.vtu", "cannot
 // restart from 'VTK/bar_3.vtu'") and ends with `hint`, what to do about the file.
+// Before VTK reads `file`: its pieces' NumberOfPoints and NumberOfCells (in the XML header, before
+// any appended data) are whole numbers >= 0 (VTK takes them unchecked: a negative one crashed
+// it); an InputError naming the file otherwise.
+void checkVtuPieceSizes(const std::filesystem::path& file);
+
 class VtuChecks
 {
 public:

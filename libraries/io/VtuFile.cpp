@@ -4,6 +4,7 @@
 #include "core/InputError.hpp"
 #include "core/IoError.hpp"
 #include "io/AtomicFile.hpp"
+#include "io/VtuChecks.hpp"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
@@ -33,8 +34,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
-#include <regex>
 
 namespace sph
 {
@@ -332,43 +331,6 @@ void writeVtuInPieces(const std::filesystem::path& file, const VtuData& header, 
     });
 }
 
-namespace
-{
-
-// VTK's XML reader takes a piece's NumberOfPoints and NumberOfCells unchecked (a negative one
-// crashed it, issue 31): they must be whole numbers >= 0, checked in the XML header (the text
-// before any appended binary data) before VTK sees the file.
-void checkPieceSizes(const std::filesystem::path& file)
-{
-    std::ifstream in(file, std::ios::binary);
-    std::string header;
-    std::string chunk(1 << 16, '\0');
-    while (in && header.find("<AppendedData") == std::string::npos && header.size() < (64u << 20))
-    {
-        in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
-        header.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
-    }
-    header = header.substr(0, header.find("<AppendedData"));
-    static const std::regex size(R"re((NumberOf(?:Points|Cells))\s*=\s*"([^"]*)")re");
-    for (auto it = std::sregex_iterator(header.begin(), header.end(), size);
-         it != std::sregex_iterator(); ++it)
-    {
-        const std::string value = (*it)[2];
-        const bool whole = !value.empty() && value.size() <= 18 &&
-                           std::all_of(value.begin(), value.end(),
-                                       [](char c) { return c >= '0' && c <= '9'; });
-        if (!whole)
-        {
-            throw InputError("cannot read '" + file.string() + "': its " + std::string((*it)[1]) +
-                                 " is \"" + value + "\", not a whole number >= 0",
-                             {"The file is damaged; write it again (sphParticles, or the run "
-                              "that wrote it)."});
-        }
-    }
-}
-
-} // namespace
-
 VtuData readVtu(const std::filesystem::path& file)
 {
     if (!std::filesystem::is_regular_file(file))
@@ -382,7 +344,7 @@ VtuData readVtu(const std::filesystem::path& file)
         throw InputError("'" + file.string() + "' is not a readable VTK unstructured grid (.vtu)",
                          {"It may be damaged, or written by another program in another format."});
     }
-    checkPieceSizes(file);
+    checkVtuPieceSizes(file);
     reader->SetFileName(file.c_str());
     reader->Update();
     vtkUnstructuredGrid* grid = reader->GetOutput();

@@ -5,7 +5,6 @@
 #include "io/AtomicFile.hpp"
 #include "particles/Parallel.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -229,25 +228,7 @@ bool Simulation<D>::moveReference(long firstStep)
         [this](const ForceStatus& moveStatus) {
             checkStatus(moveStatus, "moving the reference configuration");
         },
-        [this]
-        {
-            // The ghosts' reference, and their own history where the move rebased it (§G4).
-            std::vector<std::string> names = reference_->fieldNames();
-            for (const auto& material : materialModels_)
-            {
-                if (scheme_->movesParticleHistory())
-                {
-                    for (const std::string& name : material->rebasedFields())
-                    {
-                        if (std::find(names.begin(), names.end(), name) == names.end())
-                        {
-                            names.push_back(name);
-                        }
-                    }
-                }
-            }
-            refreshGhosts(names);
-        }};
+        [this] { refreshGhosts(fieldsAMoveChanges()); }};
     // Π at these positions with the reference before the move, against Π with the moved one
     // from the force evaluation that follows (§G6).
     const std::optional<double> before =

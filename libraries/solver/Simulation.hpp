@@ -102,6 +102,7 @@ private:
     bool moveReference(long firstStep);           // x^n -> the reference configuration
     bool energyWanted(long firstStep) const;      // the function objects' needs -> bool
     double strainEnergyNow();                     // x^n, the reference as it is -> Π
+    std::vector<std::string> fieldsAMoveChanges() const; // what ghosts refresh after a move
     ForceStatus computeForces(bool atReference,   // x^n, reference -> T (in acceleration_),
                               bool wantEnergy);   //   F^n, P^n, Π^n
     void accelerate();                            // T, m, g, fixed -> a^n (in place)

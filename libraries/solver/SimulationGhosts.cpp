@@ -179,6 +179,26 @@ void Simulation<D>::refreshGhosts(const std::vector<std::string>& names)
     }
 }
 
+// The fields a move of the reference changes: the reference's own, and the materials' history
+// where the scheme rebases it (gradF elasticState, docs/theory/gradF-plastic.md §G4).
+template <int D>
+std::vector<std::string> Simulation<D>::fieldsAMoveChanges() const
+{
+    std::vector<std::string> names = reference_->fieldNames();
+    for (const auto& material : materialModels_)
+    {
+        for (const std::string& name :
+             scheme_->movesParticleHistory() ? material->rebasedFields() : std::vector<std::string>{})
+        {
+            if (std::find(names.begin(), names.end(), name) == names.end())
+            {
+                names.push_back(name);
+            }
+        }
+    }
+    return names;
+}
+
 // What an owned particle reads of a ghost is its position, its reference (x^r, V^r, F^r, K:
 // refreshed at each move) and what never changes (V0, body). The rest of a ghost is recomputed
 // before anything reads it (F and P, refreshed after the forces), or read by nothing (its
