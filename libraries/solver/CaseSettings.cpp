@@ -109,6 +109,10 @@ Schema SchemeSettings::schema()
                  .optional())
         .add(Key::dict("artificialViscosity", "artificial viscosity { type ...; } (default none)")
                  .selects("artificialViscosity")
+                 .optional())
+        .add(Key::dict("impenetrability", "a close-pair energy that keeps stress-free material "
+                                          "from pairing { distance 0.5; } (default none; "
+                                          "docs/theory/impenetrability.md)")
                  .optional());
 }
 
@@ -132,6 +136,7 @@ SchemeSettings SchemeSettings::read(const Dictionary& sphSchemes)
     settings.timeIntegration = p.has("timeIntegration") ? &p.dict("timeIntegration") : nullptr;
     settings.artificialViscosity =
         p.has("artificialViscosity") ? &p.dict("artificialViscosity") : nullptr;
+    settings.impenetrability = p.has("impenetrability") ? &p.dict("impenetrability") : nullptr;
     return settings;
 }
 

@@ -79,6 +79,7 @@ struct SchemeSettings
     const Dictionary* contact = nullptr; // null: none
     const Dictionary* timeIntegration = nullptr; // null: leapfrog
     const Dictionary* artificialViscosity = nullptr; // null: none
+    const Dictionary* impenetrability = nullptr; // null: no close-pair energy
 
     static Schema schema();
     static SchemeSettings read(const Dictionary& sphSchemes);

@@ -256,7 +256,11 @@ double Simulation<D>::strainEnergyNow()
                      materials_, reference_->reference(), false};
     in.owned = distributed() ? &owned_ : nullptr;
     in.globalId = distributed() ? &globalId_ : nullptr;
-    const double energy = scheme_->energy(in);
+    double energy = scheme_->energy(in);
+    if (impenetrability_)
+    {
+        energy += impenetrability_->energy(in.x, in.V0, in.body, in.ref, in.owned);
+    }
     return distributed() ? comm_.sum(energy) : energy;
 }
 
@@ -282,6 +286,11 @@ ForceStatus Simulation<D>::computeForces(bool atReference, bool wantEnergy)
     ForceOutput<D> out{acceleration_, nextF_, nextP_};
     ForceStatus status = scheme_->computeForces(in, out, wantEnergy);
     checkStatus(status, "computing the internal forces");
+    if (impenetrability_)
+    {
+        status.strainEnergy += impenetrability_->addForces(
+            in.x, in.V0, in.body, in.ref, in.owned, acceleration_, wantEnergy);
+    }
     particles_.F.swap(nextF_);
     particles_.P.swap(nextP_);
     if (distributed())

@@ -36,6 +36,7 @@
 #include "solver/ParticleFile.hpp"
 #include "solver/RunLog.hpp"
 #include "solver/StateFile.hpp"
+#include "stabilisation/Impenetrability.hpp"
 #include "timeIntegration/TimeIntegration.hpp"
 #include "walls/WallSet.hpp"
 
@@ -78,6 +79,7 @@ private:
     void loadParticles(const InitialParticles& initial);
     void setupWalls();
     void setupViscosity(const SchemeSettings& schemes);
+    void setupImpenetrability(const SchemeSettings& schemes);
     void setupFunctionObjects();
     void checkCrossingOrder();
     // SimulationBodies.cpp
@@ -207,6 +209,7 @@ private:
     std::unique_ptr<Contact<D>> contact_;
     std::unique_ptr<WallSet<D>> walls_; // constant/walls (empty without the file)
     std::unique_ptr<ArtificialViscosity<D>> viscosity_;
+    std::unique_ptr<Impenetrability<D>> impenetrability_; // null: not in sphSchemes
     std::unique_ptr<TimeIntegration<D>> integrator_;
     std::vector<std::unique_ptr<FunctionObject<D>>> functionObjects_;
     std::unique_ptr<ReferenceManager<D>> reference_;

@@ -58,6 +58,7 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
     setupBodies(dicts.get("bodies"));
     setupWalls();
     setupViscosity(schemes);
+    setupImpenetrability(schemes);
     checkCrossingOrder();
     setupFunctionObjects();
 
@@ -186,6 +187,25 @@ void Simulation<D>::setupViscosity(const SchemeSettings& schemes)
     }
 }
 
+// After the bodies: the energy reads each body's ρ0 and c0 (docs/theory/impenetrability.md).
+template <int D>
+void Simulation<D>::setupImpenetrability(const SchemeSettings& schemes)
+{
+    if (!schemes.impenetrability)
+    {
+        return;
+    }
+    const Params p =
+        Schema()
+            .add(Key::real("distance", "pairs closer than this many initial spacings store "
+                                       "energy; 0.5 keeps clear of every continuum "
+                                       "deformation of the suite "
+                                       "(docs/theory/impenetrability.md §I4)")
+                     .range(0.0, 1.0, false, true))
+            .validate(*schemes.impenetrability, "impenetrability", D);
+    impenetrability_ = std::make_unique<Impenetrability<D>>(p.real("distance"), materials_);
+}
+
 // 1D: each body's particles in the order of X along the bar, which they must keep (a
 // distributed run sorts its local particles again whenever they change).
 template <int D>
@@ -253,6 +273,12 @@ std::vector<std::string> Simulation<D>::describe() const
     lines.push_back("Scheme      " + scheme_->summary());
     lines.push_back("Contact     " + contact_->summary());
     lines.push_back("Viscosity   " + viscosity_->summary());
+    if (impenetrability_)
+    {
+        lines.push_back("Close pairs impenetrability, energy below " +
+                        formatNumber(impenetrability_->distance()) +
+                        " initial spacings (docs/theory/impenetrability.md)");
+    }
     lines.push_back("Integrator  " + integrator_->summary());
     for (std::size_t b = 0; b < bodyNames_.size(); ++b)
     {

@@ -52,7 +52,7 @@ const std::map<std::string, std::map<int, Names>>& expected()
         {"wall", {{1, {"plane"}}, {2, {"plane"}}, {3, {"plane"}}}},
         {"functionObject",
          {{1, {"energy", "exactSolution", "extent", "oscillation", "probes", "snapshot", "stabilityMonitor", "wallForce"}},
-          {2, {"energy", "extent", "oscillation", "probes", "snapshot", "stabilityMonitor", "surfaceProfile",
+          {2, {"energy", "extent", "failureLine", "oscillation", "probes", "snapshot", "stabilityMonitor", "surfaceProfile",
                "wallForce"}},
           {3, {"energy", "extent", "oscillation", "probes", "snapshot", "stabilityMonitor", "wallForce"}}}},
         {"region",
