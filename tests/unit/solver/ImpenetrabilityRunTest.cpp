@@ -1,5 +1,5 @@
 // The close-pair energy in a run (docs/theory/impenetrability.md): where no pair comes closer
-// than the distance — the colliding rings, elastic, updated-Lagrangian gradF through first
+// than the distance (the default, 0.7) — the colliding rings, elastic, updated-Lagrangian gradF through first
 // contact — the run is the one without the key, bit for bit (§I2); with a distance of a whole
 // spacing the energy acts, and the run differs (so the comparison can fail). Its energy is in
 // the strain energy the audit balances.
@@ -34,7 +34,7 @@ TEST_CASE("impenetrability leaves a run without close pairs unchanged, bit for b
     test::TempDir half;
     test::TempDir whole;
     const VtuData a = runRings(without.path(), {});
-    const VtuData b = runRings(half.path(), {"-set", "sphSchemes.impenetrability={ distance 0.5; }"});
+    const VtuData b = runRings(half.path(), {"-set", "sphSchemes.impenetrability={ }"});
     test::requireIdenticalState(a, b);
     CHECK(a.fieldData.at("restart:contactWork").values.at(0) != 0.0); // the rings touched
     const VtuData c = runRings(whole.path(), {"-set", "sphSchemes.impenetrability={ distance 1; }"});
