@@ -111,7 +111,7 @@ Schema SchemeSettings::schema()
                  .selects("artificialViscosity")
                  .optional())
         .add(Key::dict("impenetrability", "a close-pair energy that keeps stress-free material "
-                                          "from pairing { distance 0.7; } (default none; "
+                                          "from pairing { distance 0.5; } (default none; "
                                           "docs/theory/impenetrability.md)")
                  .optional());
 }

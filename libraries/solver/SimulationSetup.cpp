@@ -198,10 +198,10 @@ void Simulation<D>::setupImpenetrability(const SchemeSettings& schemes)
     const Params p =
         Schema()
             .add(Key::real("distance", "pairs closer than this many initial spacings store "
-                                       "energy; the collapse's sweep chose 0.7 "
-                                       "(docs/theory/impenetrability.md §I4)")
+                                       "energy; 0.5 by the sweeps on the collapse and the "
+                                       "metal impact (docs/theory/impenetrability.md §I4)")
                      .range(0.0, 1.0, false, true)
-                     .defaultValue("0.7"))
+                     .defaultValue("0.5"))
             .validate(*schemes.impenetrability, "impenetrability", D);
     impenetrability_ = std::make_unique<Impenetrability<D>>(p.real("distance"), materials_);
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Impenetrability (system/sphSchemes `impenetrability { distance 0.7; }`): a conservative pair
+// Impenetrability (system/sphSchemes `impenetrability { distance 0.5; }`): a conservative pair
 // energy that keeps particles from pairing where the material carries no stress
 // (docs/theory/impenetrability.md). Added to any scheme's force and energy:
 //

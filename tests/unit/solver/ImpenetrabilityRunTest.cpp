@@ -1,5 +1,5 @@
 // The close-pair energy in a run (docs/theory/impenetrability.md): where no pair comes closer
-// than the distance (the default, 0.7) — the colliding rings, elastic, updated-Lagrangian gradF through first
+// than the distance (the default, 0.5) — the colliding rings, elastic, updated-Lagrangian gradF through first
 // contact — the run is the one without the key, bit for bit (§I2); with a distance of a whole
 // spacing the energy acts, and the run differs (so the comparison can fail). Its energy is in
 // the strain energy the audit balances.
