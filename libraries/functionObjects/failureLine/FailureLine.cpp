@@ -21,6 +21,7 @@
 //   unmovedArea  Σ V0 of the particles that have not moved [m² per metre]
 // summary.json: the same values at the last row.
 #include "functionObjects/FunctionObjectModel.hpp"
+#include "functionObjects/ProfileColumns.hpp"
 #include "io/AtomicFile.hpp"
 
 #include <algorithm>
@@ -44,41 +45,19 @@ public:
     }
     static Schema schema()
     {
-        return FunctionObjectModel<D>::commonSchema()
-            .add(Key::bodyList("bodies", "which bodies; () = all").defaultValue("()"))
+        return ProfileColumns::addKeys(FunctionObjectModel<D>::commonSchema())
             .add(Key::real("threshold", "displacement |x - X| that counts as moved [m], e.g. "
                                         "1e-3")
-                     .positive())
-            .add(Key::real("binWidth", "column width [m] (default: the particle spacing)")
-                     .positive()
-                     .optional());
+                     .positive());
     }
 
     FailureLine(const Params& params, const typename FunctionObject<D>::Args& args)
         : FunctionObjectModel<D>(params, args), threshold_(params.real("threshold"))
     {
-        const auto& names = *args.bodyNames;
-        bodies_ = params.bodyIndices("bodies");
-        if (bodies_.empty())
-        {
-            for (std::size_t b = 0; b < names.size(); ++b)
-            {
-                bodies_.push_back(b);
-            }
-        }
-        const ParticleSet<D>& p = *args.initial;
-        double spacing = 0.0;
-        std::size_t count = 0;
-        for (const std::size_t b : bodies_)
-        {
-            for (std::size_t a = p.bodies[b].begin; a < p.bodies[b].end; ++a)
-            {
-                spacing += std::sqrt(p.V0[a]);
-                ++count;
-            }
-        }
-        half_ = count > 0 ? 0.5 * spacing / static_cast<double>(count) : 0.0;
-        width_ = params.has("binWidth") ? params.real("binWidth") : 2.0 * half_;
+        const ProfileColumns profile = ProfileColumns::read<D>(params, args);
+        bodies_ = profile.bodies;
+        half_ = profile.half;
+        width_ = profile.width;
         this->setColumns({"toe", "angle", "unmovedArea"});
     }
 

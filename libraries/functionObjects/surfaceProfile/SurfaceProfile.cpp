@@ -24,6 +24,7 @@
 #include "core/InputError.hpp"
 #include "core/TextFile.hpp"
 #include "functionObjects/FunctionObjectModel.hpp"
+#include "functionObjects/ProfileColumns.hpp"
 #include "io/AtomicFile.hpp"
 
 #include <algorithm>
@@ -47,11 +48,7 @@ public:
     }
     static Schema schema()
     {
-        return FunctionObjectModel<D>::commonSchema()
-            .add(Key::bodyList("bodies", "which bodies; () = all").defaultValue("()"))
-            .add(Key::real("binWidth", "column width [m] (default: the particle spacing)")
-                     .positive()
-                     .optional())
+        return ProfileColumns::addKeys(FunctionObjectModel<D>::commonSchema())
             .add(Key::string("reference", "a measured profile: x y pairs [m] (file relative "
                                           "to the case)")
                      .optional());
@@ -60,29 +57,10 @@ public:
     SurfaceProfile(const Params& params, const typename FunctionObject<D>::Args& args)
         : FunctionObjectModel<D>(params, args)
     {
-        const auto& names = *args.bodyNames;
-        bodies_ = params.bodyIndices("bodies");
-        if (bodies_.empty())
-        {
-            for (std::size_t b = 0; b < names.size(); ++b)
-            {
-                bodies_.push_back(b);
-            }
-        }
-        // Half a spacing: the cell the outermost particle centre stands for.
-        const ParticleSet<D>& p = *args.initial;
-        double spacing = 0.0;
-        std::size_t count = 0;
-        for (const std::size_t b : bodies_)
-        {
-            for (std::size_t a = p.bodies[b].begin; a < p.bodies[b].end; ++a)
-            {
-                spacing += std::sqrt(p.V0[a]);
-                ++count;
-            }
-        }
-        half_ = count > 0 ? 0.5 * spacing / static_cast<double>(count) : 0.0;
-        width_ = params.has("binWidth") ? params.real("binWidth") : 2.0 * half_;
+        const ProfileColumns profile = ProfileColumns::read<D>(params, args);
+        bodies_ = profile.bodies;
+        half_ = profile.half;
+        width_ = profile.width;
         std::vector<std::string> columns{"front", "top", "depositEnd"};
         if (params.has("reference"))
         {

@@ -113,20 +113,8 @@ void checkImpenetrability()
         REQUIRE(e == Approx(p.energy(x)).epsilon(1e-14));
         const double scale = test::largestComponent(T);
         REQUIRE(scale > 0.0);
-        double fdError = 0.0;
-        const double step = 1e-6;
-        for (std::size_t c = 0; c < x.size(); ++c)
-        {
-            for (int i = 0; i < D; ++i)
-            {
-                auto xp = x;
-                auto xm = x;
-                xp[c][i] += step;
-                xm[c][i] -= step;
-                const double numeric = -(p.energy(xp) - p.energy(xm)) / (2 * step);
-                fdError = std::max(fdError, std::abs(T[c][i] - numeric));
-            }
-        }
+        const double fdError = test::largestGradientError<D>(
+            [&](const std::vector<Vec<D>>& y) { return p.energy(y); }, x, T);
         CHECK(fdError < 1e-7 * scale);
 
         Vec<D> momentum = Vec<D>::Zero();

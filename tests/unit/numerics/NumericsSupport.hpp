@@ -340,11 +340,11 @@ double schemeHOverDx()
     return D == 3 ? 1.6 : 1.4;
 }
 
-// The largest component of T − (−∂Π/∂x), Π by central differences (step in units of x) at
-// every particle and direction: how far forces are from the energy's gradient.
-template <int D>
-double largestForceError(SchemeFixture<D>& fixture, const std::vector<Vec<D>>& x,
-                         const std::vector<Vec<D>>& T, double step = 1e-6)
+// The largest component of T − (−∂Π/∂x), Π = energy(x) by central differences (step in units
+// of x) at every particle and direction: how far forces are from the energy's gradient.
+template <int D, class Energy>
+double largestGradientError(const Energy& energy, const std::vector<Vec<D>>& x,
+                            const std::vector<Vec<D>>& T, double step = 1e-6)
 {
     double error = 0.0;
     for (std::size_t c = 0; c < x.size(); ++c)
@@ -355,11 +355,20 @@ double largestForceError(SchemeFixture<D>& fixture, const std::vector<Vec<D>>& x
             auto xm = x;
             xp[c][i] += step;
             xm[c][i] -= step;
-            const double numeric = -(fixture.energy(xp) - fixture.energy(xm)) / (2 * step);
+            const double numeric = -(energy(xp) - energy(xm)) / (2 * step);
             error = std::max(error, std::abs(T[c][i] - numeric));
         }
     }
     return error;
+}
+
+// The same for a scheme's force and energy.
+template <int D>
+double largestForceError(SchemeFixture<D>& fixture, const std::vector<Vec<D>>& x,
+                         const std::vector<Vec<D>>& T, double step = 1e-6)
+{
+    return largestGradientError<D>([&](const std::vector<Vec<D>>& y) { return fixture.energy(y); },
+                                   x, T, step);
 }
 
 // One material point driven like a particle of the solver: trial evaluations from its

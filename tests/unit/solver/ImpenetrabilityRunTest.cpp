@@ -3,8 +3,6 @@
 // contact — the run is the one without the key, bit for bit (§I2); with a distance of a whole
 // spacing the energy acts, and the run differs (so the comparison can fail). Its energy is in
 // the strain energy the audit balances.
-#include "io/PvdSeries.hpp"
-#include "io/VtuFile.hpp"
 #include "solver/SolverCases.hpp"
 
 using namespace sph;
@@ -14,15 +12,10 @@ namespace
 
 VtuData runRings(const std::filesystem::path& folder, const std::vector<std::string>& more)
 {
-    const auto caseDir = test::copyTutorial("rings2D/collidingRings", folder);
-    REQUIRE(test::runParticles(caseDir, {"-set", "ringA.spacing=2e-3", "-set", "ringB.spacing=2e-3"}) == 0);
     std::vector<std::string> arguments{"-set", "formulation.type=updatedLagrangian", "-set",
                                        "endTime=0.008", "-set", "writeInterval=1"};
     arguments.insert(arguments.end(), more.begin(), more.end());
-    REQUIRE(test::runSolver(caseDir, arguments) == 0);
-    PvdSeries series(caseDir / "VTK" / "collidingRings.pvd");
-    series.load();
-    return readVtu(caseDir / "VTK" / series.entries().back().file);
+    return test::runCoarseRings(folder, arguments);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #pragma once
 // Small cases written by the solver tests.
 
+#include "io/PvdSeries.hpp"
 #include "io/VtuFile.hpp"
 #include "support/CaseRunner.hpp"
 
@@ -68,6 +69,19 @@ inline std::filesystem::path writeWallCase(const std::filesystem::path& folder, 
         << "stiff { type linearElastic; E 1e7; nu 0.3; rho 1000; }\n" << bodies << "\n";
     std::ofstream(folder / "constant" / "walls") << walls << "\n";
     return folder;
+}
+
+// The colliding rings coarsened to 2 mm (1120 particles, above the size at which loops use
+// threads), run by sphSolid with `arguments`; their last output.
+inline VtuData runCoarseRings(const std::filesystem::path& folder,
+                              const std::vector<std::string>& arguments)
+{
+    const auto caseDir = copyTutorial("rings2D/collidingRings", folder);
+    REQUIRE(runParticles(caseDir, {"-set", "ringA.spacing=2e-3", "-set", "ringB.spacing=2e-3"}) == 0);
+    REQUIRE(runSolver(caseDir, arguments) == 0);
+    PvdSeries series(caseDir / "VTK" / "collidingRings.pvd");
+    series.load();
+    return readVtu(caseDir / "VTK" / series.entries().back().file);
 }
 
 // Two outputs hold the same state bit for bit: the points, every point array (display and

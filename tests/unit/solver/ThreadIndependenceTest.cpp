@@ -2,8 +2,6 @@
 // particle, reductions are ordered, so one and two threads give the same bits. The coarse
 // rings (1120 particles, above the size at which loops use threads) through first contact.
 // Nor on whether the kernel values per pair are stored or recomputed.
-#include "io/PvdSeries.hpp"
-#include "io/VtuFile.hpp"
 #include "solver/SolverCases.hpp"
 
 using namespace sph;
@@ -14,15 +12,10 @@ namespace
 VtuData runRings(const std::filesystem::path& folder, const std::string& threads,
                  const std::string& scheme, const std::vector<std::string>& more = {})
 {
-    const auto caseDir = test::copyTutorial("rings2D/collidingRings", folder);
-    REQUIRE(test::runParticles(caseDir, {"-set", "ringA.spacing=2e-3", "-set", "ringB.spacing=2e-3"}) == 0);
     std::vector<std::string> arguments{"-threads", threads, "-set", "stabilisation.type=" + scheme,
                                        "-set", "endTime=0.008", "-set", "writeInterval=1"};
     arguments.insert(arguments.end(), more.begin(), more.end());
-    REQUIRE(test::runSolver(caseDir, arguments) == 0);
-    PvdSeries series(caseDir / "VTK" / "collidingRings.pvd");
-    series.load();
-    return readVtu(caseDir / "VTK" / series.entries().back().file);
+    return test::runCoarseRings(folder, arguments);
 }
 
 } // namespace
