@@ -13,14 +13,21 @@ namespace sph
 namespace
 {
 
-const std::map<std::string, std::string>& knownFiles()
+struct KnownFile
 {
-    static const std::map<std::string, std::string> files{{"controlDict", "system/controlDict"},
-                                                          {"sphSchemes", "system/sphSchemes"},
-                                                          {"particlesDict", "system/particlesDict"},
-                                                          {"studyDict", "system/studyDict"},
-                                                          {"bodies", "constant/bodies"},
-                                                          {"walls", "constant/walls"}};
+    std::string path;
+    std::vector<std::string> readBy; // the applications that take it as input
+};
+
+const std::map<std::string, KnownFile>& knownFiles()
+{
+    static const std::map<std::string, KnownFile> files{
+        {"controlDict", {"system/controlDict", {"sphSolid"}}},
+        {"sphSchemes", {"system/sphSchemes", {"sphSolid", "sphParticles"}}},
+        {"particlesDict", {"system/particlesDict", {"sphParticles"}}},
+        {"studyDict", {"system/studyDict", {"sphStudy"}}},
+        {"bodies", {"constant/bodies", {"sphSolid"}}},
+        {"walls", {"constant/walls", {"sphSolid"}}}};
     return files;
 }
 
@@ -44,6 +51,22 @@ std::vector<std::string> split(const std::string& path)
     return parts;
 }
 
+// Whether the whole path names an entry of dict (its intermediate components sub-dictionaries).
+bool holdsPath(const Dictionary& dict, const std::vector<std::string>& parts)
+{
+    const Dictionary* at = &dict;
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+    {
+        const Entry* entry = at->find(parts[i]);
+        if (!entry || !entry->isDict())
+        {
+            return false;
+        }
+        at = &entry->dict();
+    }
+    return at->find(parts.back()) != nullptr;
+}
+
 } // namespace
 
 CaseDictionaries::CaseDictionaries(std::filesystem::path caseDir) : caseDir_(std::move(caseDir)) {}
@@ -55,7 +78,17 @@ std::string CaseDictionaries::relativePath(const std::string& name)
     {
         throw std::logic_error("unknown case dictionary '" + name + "'");
     }
-    return it->second;
+    return it->second.path;
+}
+
+const std::vector<std::string>& CaseDictionaries::readBy(const std::string& name)
+{
+    const auto it = knownFiles().find(name);
+    if (it == knownFiles().end())
+    {
+        throw std::logic_error("unknown case dictionary '" + name + "'");
+    }
+    return it->second.readBy;
 }
 
 std::string CaseDictionaries::caseName() const
@@ -124,8 +157,26 @@ const Dictionary& CaseDictionaries::get(const std::string& name) const
     return *it->second;
 }
 
-void CaseDictionaries::applySets(const std::vector<std::string>& sets)
+void CaseDictionaries::applySets(const std::vector<std::string>& sets,
+                                 const std::vector<std::string>& checkedOnly)
 {
+    // The files a -set may change: those this application reads as its input.
+    const auto settable = [&](const std::string& name)
+    {
+        return files_.count(name) &&
+               std::find(checkedOnly.begin(), checkedOnly.end(), name) == checkedOnly.end();
+    };
+    // Whether this application takes a known file as input (when the case has it).
+    const auto readHere = [&](const std::string& name)
+    {
+        const auto& readers = readBy(name);
+        return std::find(readers.begin(), readers.end(), InputError::programName()) !=
+                   readers.end() &&
+               std::find(checkedOnly.begin(), checkedOnly.end(), name) == checkedOnly.end();
+    };
+    std::vector<std::string> targets;
+    std::copy_if(order_.begin(), order_.end(), std::back_inserter(targets), settable);
+
     for (const std::string& argument : sets)
     {
         const std::string line = "-set " + argument;
@@ -175,45 +226,95 @@ void CaseDictionaries::applySets(const std::vector<std::string>& sets)
                 DictionaryParser::parseValue(source, valueText, static_cast<int>(5 + equals + 2));
         }
 
+        // A -set for a file another application reads would change nothing here (a -set of
+        // system/particlesDict given to sphSolid left the particles as they were).
+        const auto notReadHere = [&](const std::string& name, SourceLocation where)
+        {
+            const std::string& program = InputError::programName();
+            const std::vector<std::string>& readers = readBy(name);
+            std::string names;
+            for (std::size_t i = 0; i < readers.size(); ++i)
+            {
+                names += (i ? " and " : "") + readers[i];
+            }
+            std::vector<std::string> notes;
+            if (files_.count(name))
+            {
+                // Only a checked-only file is read and yet not a target.
+                notes.push_back(program + " reads " + relativePath(name) +
+                                " only to check that constant/particles.vtu was made from it.");
+            }
+            notes.push_back("Give the -set to " + readers.front() + ": " + readers.front() +
+                            " -set " + argument +
+                            (name == "particlesDict" ? " (then run " + program + ")" : ""));
+            return InputError(where,
+                              "-set: " + relativePath(name) + " is read by " + names + ", not by " +
+                                  program,
+                              notes);
+        };
+
         // Which file?
         std::string file;
-        if (files_.count(parts.front()) && parts.size() > 1)
+        std::vector<std::string> holders;
+        for (const auto& name : targets)
+        {
+            if (files_.at(name)->find(parts.front()))
+            {
+                holders.push_back(name);
+            }
+        }
+        if (settable(parts.front()) && parts.size() > 1)
         {
             file = parts.front();
             parts.erase(parts.begin());
         }
+        else if (parts.size() > 1 && holders.empty() && knownFiles().count(parts.front()) &&
+                 !readHere(parts.front()))
+        {
+            throw notReadHere(parts.front(), at(0, parts.front().size()));
+        }
         else
         {
-            std::vector<std::string> holders;
-            for (const auto& name : order_)
+            // A path written whole in one file wins over a file that only has its first key
+            // (`bar.n` is a key of particlesDict's bar, not of the bar of constant/bodies).
+            std::vector<std::string> whole;
+            std::copy_if(holders.begin(), holders.end(), std::back_inserter(whole),
+                         [&](const std::string& name)
+                         { return holdsPath(*files_.at(name), parts); });
+            for (const auto& name : checkedOnly)
             {
-                if (files_.at(name)->find(parts.front()))
+                if (files_.count(name) && holdsPath(*files_.at(name), parts) && whole.empty())
                 {
-                    holders.push_back(name);
+                    throw notReadHere(name, at(0, path.size()));
                 }
             }
             if (holders.size() > 1)
             {
+                const auto& choices = whole.empty() ? holders : whole;
+                std::string prefixed;
+                for (std::size_t i = 0; i < choices.size(); ++i)
+                {
+                    prefixed += (i ? " or -set " : "-set ") + choices[i] + "." + argument;
+                }
                 throw InputError(at(0, parts.front().size()),
                                  "-set key '" + parts.front() + "' is ambiguous: it is in " +
                                      joinSorted(holders),
-                                 {"Prefix the file: -set " + holders.front() + "." + argument});
+                                 {"Prefix the file: " + prefixed});
             }
             if (holders.empty())
             {
                 std::vector<std::string> topKeys;
-                std::vector<std::string> fileNames;
-                for (const auto& name : order_)
+                for (const auto& name : targets)
                 {
-                    fileNames.push_back(name);
                     for (const auto& key : files_.at(name)->keys())
                     {
                         topKeys.push_back(key);
                     }
                 }
                 std::vector<std::string> notes{"To add a new top-level key, prefix its file (" +
-                                               joinSorted(fileNames) + "): -set controlDict." +
-                                               argument};
+                                               joinSorted(targets) + "): -set " +
+                                               (targets.empty() ? "controlDict" : targets.front()) +
+                                               "." + argument};
                 const std::string hint = didYouMean(parts.front(), topKeys);
                 if (!hint.empty())
                 {

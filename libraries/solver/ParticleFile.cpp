@@ -27,6 +27,15 @@ void writeParticleFile(const std::filesystem::path& file, const InitialParticles
     data.fieldData["spacing"] = VtuArray{1, {particles.spacing}, false, {}, {}};
     data.fieldData["dimension"] = VtuArray{1, {static_cast<double>(particles.dimension)}, true, {}, {}};
     data.stringFields["bodyNames"] = particles.bodyNames;
+    if (!particles.particlesDictDigest.empty())
+    {
+        data.stringFields["particlesDictDigest"] = {particles.particlesDictDigest};
+        data.stringFields["particlesDict"] = particles.particlesDictLines;
+    }
+    if (!particles.particlesDictSets.empty())
+    {
+        data.stringFields["particlesDictSets"] = particles.particlesDictSets;
+    }
     writeVtu(file, data);
 }
 
@@ -98,6 +107,18 @@ InitialParticles readParticleFile(const std::filesystem::path& file)
         checks.fail("it has no field data 'bodyNames' naming the bodies");
     }
     particles.bodyNames = names->second;
+    // What made them, when the file says (solver/ParticleProvenance checks it).
+    const auto strings = [&](const char* name)
+    {
+        const auto it = data.stringFields.find(name);
+        return it == data.stringFields.end() ? std::vector<std::string>() : it->second;
+    };
+    if (const auto digest = strings("particlesDictDigest"); digest.size() == 1)
+    {
+        particles.particlesDictDigest = digest.front();
+    }
+    particles.particlesDictLines = strings("particlesDict");
+    particles.particlesDictSets = strings("particlesDictSets");
     const VtuArray& dimension = checks.fieldArray("dimension", 1);
     checks.wholeNumbers("dimension", dimension, 1, 3, "the space dimension");
     particles.dimension = static_cast<int>(dimension.values[0]);

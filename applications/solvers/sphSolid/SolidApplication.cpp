@@ -9,6 +9,7 @@
 #include "parallel/Communicator.hpp"
 #include "solver/CaseSettings.hpp"
 #include "solver/ParticleFile.hpp"
+#include "solver/ParticleProvenance.hpp"
 #include "solver/Simulation.hpp"
 
 #include <omp.h>
@@ -30,6 +31,8 @@ int runDimension(const CaseDictionaries& dicts, const ControlSettings& control,
     if (std::filesystem::exists(particleFile))
     {
         initial = readParticleFile(particleFile);
+        const std::string made = checkParticlesDict(initial, dicts.caseDir()); // or stale: stop
+        std::cout << "Particles   " << made << "\n";
     }
     else if (dryRun && dicts.has("particlesDict"))
     {
@@ -101,7 +104,8 @@ int sphSolidMain(int argc, const char* const* argv)
 
     CaseDictionaries dicts(caseDir);
     dicts.read({"controlDict", "sphSchemes", "bodies"}, {"particlesDict", "walls"});
-    dicts.applySets(commandLine.sets());
+    // particlesDict is sphParticles' input; sphSolid reads it only to check the particles.
+    dicts.applySets(commandLine.sets(), {"particlesDict"});
     std::cout << "sphSolid " << projectVersion() << "  (" << commandLine.invocation() << ")\n"
               << "Threads     " << omp_get_max_threads() << "\n";
     if (commandLine.values().count("parallel"))

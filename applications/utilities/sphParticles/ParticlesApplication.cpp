@@ -8,6 +8,7 @@
 #include "io/AtomicFile.hpp"
 #include "solver/CaseSettings.hpp"
 #include "solver/ParticleFile.hpp"
+#include "solver/ParticleProvenance.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -36,8 +37,10 @@ int sphParticlesMain(int argc, const char* const* argv)
     dicts.read({"particlesDict", "sphSchemes"});
     dicts.applySets(commandLine.sets());
     const int dimension = readDimension(dicts.get("sphSchemes"));
-    const InitialParticles particles =
+    InitialParticles particles =
         generateParticles(dicts.get("particlesDict"), dimension, dicts.caseDir());
+    // So that sphSolid can tell when particlesDict has changed since (solver/ParticleProvenance).
+    recordParticlesDict(particles, dicts.get("particlesDict"), commandLine.sets());
     std::cout << "sphParticles " << projectVersion() << "  (" << commandLine.invocation() << ")\n";
     for (std::size_t b = 0; b < particles.bodyNames.size(); ++b)
     {

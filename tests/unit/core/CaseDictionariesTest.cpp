@@ -133,3 +133,53 @@ TEST_CASE("an OpenFOAM FoamFile header is ignored", "[case]")
     CHECK(dicts.get("controlDict").find("FoamFile") == nullptr);
     CHECK(dicts.get("controlDict").find("endTime")->items()[0].number() == 5e-3);
 }
+
+// A -set for a file the application does not take as input changed nothing and said nothing:
+// `sphSolid -set particlesDict.bar.n=80` ran the old particles, and `-set bar.n=80` suggested
+// `bodies.bar.n=80` (issue 32 item 1).
+TEST_CASE("particle record: a -set aimed at a file another application reads names it",
+          "[case][errors]")
+{
+    sph::test::TempDir dir;
+    writeCase(dir);
+    dir.write("system/particlesDict", "bar { type line; start 0; end 0.1333; n 40; }\n");
+    CaseDictionaries dicts(dir.path());
+    dicts.read({"controlDict", "sphSchemes", "bodies"}, {"particlesDict"});
+    SECTION("prefixed with the file sphSolid only checks against")
+    {
+        const std::string text = requireInputError(
+            [&] { dicts.applySets({"particlesDict.bar.n=80"}, {"particlesDict"}); }, 1, 6,
+            "-set: system/particlesDict is read by sphParticles, not by sphSolid");
+        CHECK_THAT(text,
+                   Catch::Contains("sphParticles -set particlesDict.bar.n=80 (then run sphSolid)"));
+    }
+    SECTION("a path written whole only in that file, not the bodies' bar")
+    {
+        const std::string text = requireInputError(
+            [&] { dicts.applySets({"bar.n=80"}, {"particlesDict"}); }, 1, 6,
+            "-set: system/particlesDict is read by sphParticles, not by sphSolid");
+        CHECK_THAT(text, Catch::Contains("sphParticles -set bar.n=80"));
+        CHECK_THAT(text, !Catch::Contains("bodies.bar.n"));
+    }
+    SECTION("a path of the bodies is set in the bodies")
+    {
+        dicts.applySets({"bar.material.E=2e4"}, {"particlesDict"});
+        const Dictionary& material =
+            dicts.get("bodies").find("bar")->dict().find("material")->dict();
+        CHECK(material.find("E")->items()[0].number() == 2e4);
+        CHECK(dicts.get("particlesDict").find("bar")->dict().find("material") == nullptr);
+    }
+    SECTION("a file the application does not read at all")
+    {
+        requireInputError([&] { dicts.applySets({"studyDict.levels.n=2"}); }, 1, 6,
+                          "-set: system/studyDict is read by sphStudy, not by sphSolid");
+    }
+    SECTION("an ambiguous key suggests the file that holds the whole path")
+    {
+        const std::string text =
+            requireInputError([&] { dicts.applySets({"bar.n=80"}); }, 1, 6,
+                              "-set key 'bar' is ambiguous: it is in bodies, particlesDict");
+        CHECK_THAT(text, Catch::Contains("Prefix the file: -set particlesDict.bar.n=80"));
+        CHECK_THAT(text, !Catch::Contains("bodies.bar.n"));
+    }
+}
