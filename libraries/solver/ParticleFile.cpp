@@ -27,9 +27,8 @@ void writeParticleFile(const std::filesystem::path& file, const InitialParticles
     data.fieldData["spacing"] = VtuArray{1, {particles.spacing}, false, {}, {}};
     data.fieldData["dimension"] = VtuArray{1, {static_cast<double>(particles.dimension)}, true, {}, {}};
     data.stringFields["bodyNames"] = particles.bodyNames;
-    if (!particles.particlesDictDigest.empty())
+    if (!particles.particlesDictLines.empty())
     {
-        data.stringFields["particlesDictDigest"] = {particles.particlesDictDigest};
         data.stringFields["particlesDict"] = particles.particlesDictLines;
     }
     if (!particles.particlesDictSets.empty())
@@ -113,10 +112,6 @@ InitialParticles readParticleFile(const std::filesystem::path& file)
         const auto it = data.stringFields.find(name);
         return it == data.stringFields.end() ? std::vector<std::string>() : it->second;
     };
-    if (const auto digest = strings("particlesDictDigest"); digest.size() == 1)
-    {
-        particles.particlesDictDigest = digest.front();
-    }
     particles.particlesDictLines = strings("particlesDict");
     particles.particlesDictSets = strings("particlesDictSets");
     const VtuArray& dimension = checks.fieldArray("dimension", 1);

@@ -2,7 +2,7 @@
 // constant/particles.vtu: the initial particles written by sphParticles and read by sphSolid.
 // A VTK point set (open it in ParaView to check the geometry) with point arrays `volume` and
 // `bodyId`, and field data `bodyNames`, `spacing`, `dimension`, and what made it (sphParticles):
-// `particlesDictDigest`, `particlesDict` (its canonical lines) and `particlesDictSets`
+// `particlesDict` (its canonical lines) and `particlesDictSets`
 // (solver/ParticleProvenance).
 
 #include "core/Dictionary.hpp"
@@ -23,9 +23,8 @@ struct InitialParticles
     std::vector<double> V;    // volume per particle
     std::vector<int> body;    // index into bodyNames; each body's particles are contiguous
     // What made them: system/particlesDict as sphParticles used it (after its -set) in canonical
-    // form (core/DictionaryDigest), its digest and those -set arguments. Empty in files written
-    // by older versions or other tools.
-    std::string particlesDictDigest;
+    // form (core/CanonicalDictionary) and those -set arguments. Empty in files written by older
+    // versions or other tools.
     std::vector<std::string> particlesDictLines;
     std::vector<std::string> particlesDictSets;
 

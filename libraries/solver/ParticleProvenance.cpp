@@ -1,7 +1,7 @@
 #include "solver/ParticleProvenance.hpp"
 
 #include "core/CaseDictionaries.hpp"
-#include "core/DictionaryDigest.hpp"
+#include "core/CanonicalDictionary.hpp"
 #include "core/InputError.hpp"
 
 #include <map>
@@ -45,14 +45,13 @@ void recordParticlesDict(InitialParticles& particles, const Dictionary& particle
                          const std::vector<std::string>& sets)
 {
     particles.particlesDictLines = canonicalLines(particlesDict);
-    particles.particlesDictDigest = canonicalDigest(particles.particlesDictLines);
     particles.particlesDictSets = sets;
 }
 
 std::string checkParticlesDict(const InitialParticles& particles,
                                const std::filesystem::path& caseDir)
 {
-    if (particles.particlesDictDigest.empty())
+    if (particles.particlesDictLines.empty())
     {
         return "constant/particles.vtu does not record its system/particlesDict (an older "
                "sphParticles or another tool): not checked";
@@ -87,7 +86,7 @@ std::string checkParticlesDict(const InitialParticles& particles,
     {
         lines.push_back(entry.line());
     }
-    if (canonicalDigest(lines) == particles.particlesDictDigest)
+    if (lines == particles.particlesDictLines)
     {
         return "made from system/particlesDict as it is" +
                (particles.particlesDictSets.empty()

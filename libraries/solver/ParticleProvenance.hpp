@@ -1,7 +1,6 @@
 #pragma once
 // Which system/particlesDict made constant/particles.vtu. sphParticles records it in the file:
-// the dictionary as it used it (after its -set) in canonical form, the digest of that form, and
-// those -set arguments. sphSolid reads the case's particlesDict again, applies the same -set, and
+// the dictionary as it used it (after its -set) in canonical form and those -set arguments. sphSolid reads the case's particlesDict again, applies the same -set, and
 // refuses particles made from something else: an edit of particlesDict without running
 // sphParticles again would otherwise run the old particles without a word.
 

@@ -1,7 +1,8 @@
 #pragma once
-// A dictionary's canonical form and its digest: what a file records about the input that made it
+// A dictionary's canonical form: what a file records about the input that made it
 // (constant/particles.vtu about system/particlesDict), so that a later run can tell whether that
-// input has changed since.
+// input has changed since, and which entry changed (the lines themselves are compared: a few
+// hundred bytes, so no digest is needed).
 //
 // One line per entry, `path.to.key value`, in the order written (the order of bodies matters);
 // comments, layout, #include and $name are resolved, numbers are written by value (1e2 and 100
@@ -26,7 +27,5 @@ struct CanonicalEntry
 
 std::vector<CanonicalEntry> canonicalEntries(const Dictionary& dict);
 std::vector<std::string> canonicalLines(const Dictionary& dict);
-// SHA-256 of the lines, each ended by a newline (core/Sha256).
-std::string canonicalDigest(const std::vector<std::string>& lines);
 
 } // namespace sph

@@ -1,6 +1,4 @@
-#include "DictionaryDigest.hpp"
-
-#include "Sha256.hpp"
+#include "CanonicalDictionary.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -86,16 +84,6 @@ std::vector<std::string> canonicalLines(const Dictionary& dict)
         lines.push_back(entry.line());
     }
     return lines;
-}
-
-std::string canonicalDigest(const std::vector<std::string>& lines)
-{
-    std::string text;
-    for (const auto& line : lines)
-    {
-        text += line + "\n";
-    }
-    return sha256Hex(text);
 }
 
 } // namespace sph
