@@ -20,6 +20,41 @@ const char* projectVersion()
     return SPH_VERSION;
 }
 
+namespace
+{
+
+std::string& commandLineOfProcess()
+{
+    static std::string text;
+    return text;
+}
+
+// `word` as the shell reads it back: as it is when it holds nothing the shell would split or
+// expand, else in single quotes (a quote inside as '\'').
+std::string shellQuoted(const std::string& word)
+{
+    const bool plain = !word.empty() &&
+        word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
+                               "_-+=.,:/@%") == std::string::npos;
+    if (plain)
+    {
+        return word;
+    }
+    std::string quoted = "'";
+    for (const char c : word)
+    {
+        quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    return quoted + "'";
+}
+
+} // namespace
+
+const std::string& processCommandLine()
+{
+    return commandLineOfProcess();
+}
+
 CommandLine::CommandLine(std::string program, std::string purpose)
     : program_(std::move(program)), purpose_(std::move(purpose)), extra_("Options of " + program_)
 {
@@ -61,8 +96,8 @@ po::options_description commonOptions(bool listTypes, bool dryRun, bool set)
                              "read and validate every dictionary, build every selected model, "
                              "then exit 0 without running");
     }
-    common.add_options()("help", "print this help and exit")("version",
-                                                             "print the version and exit");
+    common.add_options()("help", "print this help and exit (also -h)")(
+        "version", "print the version and exit");
     return common;
 }
 
@@ -101,6 +136,12 @@ bool CommandLine::parse(int argc, const char* const* argv)
         invocation_ += ' ';
         columns.push_back(static_cast<int>(invocation_.size()) + 1);
         invocation_ += argv[i];
+    }
+    std::string& quoted = commandLineOfProcess();
+    quoted = program_;
+    for (int i = 1; i < argc; ++i)
+    {
+        quoted += ' ' + shellQuoted(argv[i]);
     }
     auto source = std::make_shared<const SourceText>("command line", invocation_);
     const auto at = [&](int i) {
@@ -153,6 +194,7 @@ bool CommandLine::parse(int argc, const char* const* argv)
     all.add(commonOptions(withListTypes_, withDryRun_, withSet_)).add(extra_);
     po::options_description hidden;
     hidden.add_options()("positional", po::value<std::vector<std::string>>());
+    hidden.add_options()("h", "-help"); // -h as -help, as users try it first
     po::options_description parsing;
     parsing.add(all).add(hidden);
     po::positional_options_description positional;
@@ -212,14 +254,14 @@ bool CommandLine::parse(int argc, const char* const* argv)
                          {"Run '" + program_ + " -help' for the options."});
     }
 
-    if (values_.count("help"))
+    if (values_.count("help") || values_.count("h"))
     {
         std::cout << usage();
         return false;
     }
     if (values_.count("version"))
     {
-        std::cout << program_ << " " << projectVersion() << "\n";
+        std::cout << program_ << " " << projectVersion() << " (git " << gitRevision() << ")\n";
         return false;
     }
     if (values_.count("case"))

@@ -5,7 +5,7 @@
 //   -set path.to.key=V   override a dictionary entry after parsing (repeatable)
 //   -listTypes [family]  every registered model, its description and its keys
 //   -dryRun              read and validate everything, build every model, exit 0
-//   -help, -version
+//   -help (also -h), -version
 // Applications add their own options with options().
 
 #include "SourceLocation.hpp"
@@ -66,5 +66,14 @@ private:
 
 // The version string of the project (CMake's PROJECT_VERSION).
 const char* projectVersion();
+
+// The git revision of the source tree this build was made from (`git describe --always
+// --dirty` at build time: cmake/GitRevision.cmake), "unknown" for a build outside a checkout.
+const char* gitRevision();
+
+// The command line of the application in this process as a shell would take it back: the
+// program's name and each argument, quoted where the shell would split or expand it
+// (summary.json). Set by CommandLine::parse(); empty before.
+const std::string& processCommandLine();
 
 } // namespace sph

@@ -2,6 +2,7 @@
 // Numbers in messages and summaries: as short as they can be (1.67e+06, 1.5, 0.001), not
 // std::to_string's fixed six decimals (1670000.000000).
 
+#include <charconv>
 #include <cstdio>
 #include <string>
 
@@ -14,6 +15,15 @@ inline std::string formatNumber(double value, int significant = 6)
     char buffer[40];
     std::snprintf(buffer, sizeof buffer, "%.*g", significant, value);
     return buffer;
+}
+
+// The shortest text that reads back (strtod) as exactly `value`: 0.02, not
+// 0.020000000000000000 or 0.019999999999999997 (std::to_chars' round-trip guarantee).
+inline std::string formatShortest(double value)
+{
+    char buffer[40];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
 }
 
 // Fixed with `decimals` digits after the point: 0.449, 17608 (decimals 0).

@@ -1,5 +1,6 @@
 #include "io/PvdSeries.hpp"
 
+#include "core/Format.hpp"
 #include "core/InputError.hpp"
 #include "core/TextFile.hpp"
 #include "io/AtomicFile.hpp"
@@ -7,14 +8,32 @@
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 
-#include <fstream>
-#include <iomanip>
+#include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace pt = boost::property_tree;
 
 namespace sph
 {
+
+std::string formatSeriesTime(double time)
+{
+    if (!std::isfinite(time) || time == 0.0)
+    {
+        return formatShortest(time);
+    }
+    for (int digits = 1; digits < 17; ++digits)
+    {
+        const std::string text = formatNumber(time, digits);
+        if (std::abs(std::strtod(text.c_str(), nullptr) - time) <=
+            seriesTimeTolerance * std::abs(time))
+        {
+            return text;
+        }
+    }
+    return formatShortest(time); // exact (17 digits at most)
+}
 
 PvdSeries::PvdSeries(std::filesystem::path file) : file_(std::move(file)) {}
 
@@ -54,10 +73,13 @@ void PvdSeries::load()
 
 void PvdSeries::keepBefore(double time)
 {
+    // A loaded entry holds its time as written, within seriesTimeTolerance of the exact one:
+    // the entry of the level at `time` itself may read as a little less.
+    const double before = time - 2.0 * seriesTimeTolerance * std::abs(time);
     std::vector<Entry> kept;
     for (const Entry& entry : entries_)
     {
-        if (entry.time < time)
+        if (entry.time < before)
         {
             kept.push_back(entry);
         }
@@ -93,9 +115,7 @@ void PvdSeries::write() const
     for (const Entry& entry : entries_)
     {
         pt::ptree& dataSet = collection.add("DataSet", "");
-        std::ostringstream time;
-        time << std::setprecision(17) << entry.time;
-        dataSet.put("<xmlattr>.timestep", time.str());
+        dataSet.put("<xmlattr>.timestep", formatSeriesTime(entry.time));
         dataSet.put("<xmlattr>.group", "");
         dataSet.put("<xmlattr>.part", "0");
         dataSet.put("<xmlattr>.file", entry.file);

@@ -23,7 +23,8 @@ public:
 
     // Reads an existing series (missing file: empty series).
     void load();
-    // Keeps only the entries before `time` (a restart writes that time again).
+    // Keeps only the entries before `time` (a restart writes that time again; an entry
+    // within the series' rounding of `time` is that level's and goes too).
     void keepBefore(double time);
     // Keeps only the last `count` entries; returns the files of those dropped (the caller
     // rewrites the series first, then deletes them: the series never names a missing file).
@@ -39,6 +40,18 @@ private:
     std::filesystem::path file_;
     std::vector<Entry> entries_;
 };
+
+// How far a time in the series may be from the output's exact time, relative: the times are
+// for display (ParaView's time slider), and the exact time of a level is its own TimeValue,
+// which a restart reads. 1e-12 of the time is what the write schedules count as round-off
+// (core/WriteSchedule.hpp); it is above the drift of the output times, sums of intervals
+// (0.5 reached as 0.49999999999999994, 8e-5 as 7.9999999999999871e-05), and far below the
+// gap between two outputs, a step at least (so two outputs do not show the same time).
+inline constexpr double seriesTimeTolerance = 1e-12;
+
+// A time as the series writes it: the fewest significant digits within seriesTimeTolerance
+// of it, 0.02 rather than 0.019999999999999997; 17 digits (exact) when none is.
+std::string formatSeriesTime(double time);
 
 // The output index of `fileName` if it is one of this case's outputs, else -1: "<case>_<n>.vtu"
 // (serial), "<case>_<n>.pvtu" and the folder "<case>_<n>" of its pieces (distributed).

@@ -3,6 +3,7 @@
 // latestTime;` continues bit-identically to an uninterrupted run (SimulationRestart.cpp).
 #include "solver/Simulation.hpp"
 
+#include "core/CommandLine.hpp"
 #include "core/InputError.hpp"
 #include "io/AtomicFile.hpp"
 #include "io/PvtuFile.hpp"
@@ -31,6 +32,10 @@ void Simulation<D>::writeSummary(const RunSummary& summary, const std::string& f
     }
     nlohmann::ordered_json json;
     json["case"] = caseName_;
+    // What made the run: the build and the command line (to run it again).
+    json["version"] = projectVersion();
+    json["gitRevision"] = gitRevision();
+    json["commandLine"] = processCommandLine();
     json["dimension"] = D;
     json["particles"] = distributed() ? globalCount_ : particles_.size();
     json["spacing"] = spacing_;

@@ -51,7 +51,7 @@ int runDimension(const CaseDictionaries& dicts, const ControlSettings& control,
     }
     Simulation<D> simulation(dicts, control, schemes, initial);
     initial = InitialParticles(); // copied into the simulation: not kept for the whole run
-    RunLog log(std::cout);
+    RunLog log(std::cout, 1.0, RunLog::stdoutIsTerminal()); // on a terminal: one line in place
     log.header(simulation.describe());
     if (dryRun)
     {

@@ -14,6 +14,7 @@ using namespace sph;
 namespace
 {
 
+// The exact times of the outputs: their TimeValue (the .pvd shows them rounded to 1e-12).
 std::vector<double> outputTimes(const std::filesystem::path& caseDir)
 {
     PvdSeries series(caseDir / "VTK" / (caseDir.filename().string() + ".pvd"));
@@ -21,7 +22,8 @@ std::vector<double> outputTimes(const std::filesystem::path& caseDir)
     std::vector<double> times;
     for (const auto& entry : series.entries())
     {
-        times.push_back(entry.time);
+        const VtuData data = readVtu(caseDir / "VTK" / entry.file);
+        times.push_back(data.fieldData.at("TimeValue").values.at(0));
     }
     return times;
 }
