@@ -6,6 +6,7 @@
 //   IoError           -> the file and the system's reason, exit 4 (every output already in
 //                        place is intact: io/AtomicFile)
 //   anything else     -> "internal error" with what() and a request to report it, exit 3
+// and sphSolid returns stoppedExitCode (5) itself for a run stopped before endTime.
 // A distributed run (sphSolid -parallel) says through ErrorReporting which of its processes
 // prints what; this file stays free of MPI (core does not link the parallel library).
 
@@ -39,6 +40,12 @@ struct ErrorReporting
     // the exit code.
     std::function<void(int)> stopAll;
 };
+
+// The exit code of a sphSolid run stopped before endTime on request (SIGTERM, SIGINT, `stopAt
+// writeNow`: solver/StopRequest.hpp): its last level is written and restartable, and
+// postProcessing/summary.json says "stopped" and by what. Not an error: distinct from 0 so that a
+// job script knows the run is not complete.
+constexpr int stoppedExitCode = 5;
 
 int guardedMain(const std::function<int()>& body, const ErrorReporting& reporting = {});
 

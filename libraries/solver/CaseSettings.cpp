@@ -28,9 +28,20 @@ Schema ControlSettings::schema()
                                         "(0: keep all)")
                  .min(0)
                  .defaultValue("0"))
-        .add(Key::word("startFrom", "startTime, or latestTime to restart from the last output")
+        .add(Key::word("startFrom", "startTime: from startTime (0: the initial state, else the "
+                                    "output written at that time); latestTime: from the last "
+                                    "output")
                  .choices({"startTime", "latestTime"})
                  .defaultValue("startTime"))
+        .add(Key::real("startTime", "with startFrom startTime: 0 starts afresh, a later time "
+                                    "continues from the output written at that time [s]")
+                 .nonNegative()
+                 .defaultValue("0"))
+        .add(Key::word("stopAt", "endTime: run to endTime; writeNow: write the current level and "
+                                 "stop (read again while running, as OpenFOAM's "
+                                 "runTimeModifiable)")
+                 .choices({"endTime", "writeNow"})
+                 .defaultValue("endTime"))
         .add(Key::integer("timeStepUpdateInterval",
                           "steps between recomputing the wave speed from the current F (0: keep "
                           "the initial time step)")
@@ -79,6 +90,12 @@ ControlSettings ControlSettings::read(const CaseDictionaries& dicts)
     }
     settings.purgeWrite = p.integer("purgeWrite");
     settings.startFromLatest = p.word("startFrom") == "latestTime";
+    if (!settings.startFromLatest && p.real("startTime") > 0.0)
+    {
+        settings.startTime = p.real("startTime");
+        settings.startTimeLocation = p.location("startTime");
+    }
+    settings.stopAtWriteNow = p.word("stopAt") == "writeNow";
     settings.timeStepUpdateInterval = p.integer("timeStepUpdateInterval");
     settings.maxLoadImbalance = p.real("maxLoadImbalance");
     if (p.has("maxSteps"))

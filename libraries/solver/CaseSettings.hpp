@@ -11,6 +11,10 @@
 //                          | timeStep: every writeInterval steps (OpenFOAM's words)   |
 //   purgeWrite             | keep only the last N VTK outputs (0: keep all)           | 0
 //   startFrom              | startTime, or latestTime to restart from the last output | startTime
+//   startTime              | with startFrom startTime: 0 starts afresh, a later time  | 0
+//                          | continues from the restartable output written then       |
+//   stopAt                 | endTime, or writeNow: write the level and stop (read     | endTime
+//                          | again while running: solver/StopRequest.hpp)             |
 //   timeStepUpdateInterval | steps between recomputing c from the current F (0: keep | 1
 //                          | the initial Δt, as for comparisons with other codes)     |
 //   maxSteps               | stop after this many steps (benchmarks)                  | optional
@@ -53,6 +57,10 @@ struct ControlSettings
     WriteControl writeControl = WriteControl::adjustableRunTime;
     long purgeWrite = 0; // keep the last N outputs (0: all)
     bool startFromLatest = false;
+    // startFrom startTime with startTime > 0: continue from the output written at that time.
+    std::optional<double> startTime;
+    SourceLocation startTimeLocation;
+    bool stopAtWriteNow = false; // stopAt writeNow: write the first level and stop
     long timeStepUpdateInterval = 1;
     std::optional<long> maxSteps;
     double maxLoadImbalance = 1.2; // distributed runs: repartition above this (max / mean)

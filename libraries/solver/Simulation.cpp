@@ -2,6 +2,7 @@
 #include "solver/Simulation.hpp"
 
 #include "core/Application.hpp"
+#include "core/Format.hpp"
 #include "io/AtomicFile.hpp"
 #include "particles/Parallel.hpp"
 
@@ -28,7 +29,11 @@ RunSummary Simulation<D>::run(RunLog& log)
             removeStaleTemporaries(dicts_.caseDir() / folder);
         }
     }
-    const bool restarted = control_.startFromLatest && restoreLatest(log);
+    // SIGTERM and SIGINT ask for a graceful stop while the run is under way (restored after).
+    const StopSignals stopSignals;
+    controlWatch_.emplace(dicts_.caseDir(), control_.stopAtWriteNow);
+    const bool restarted =
+        (control_.startFromLatest || control_.startTime) && restoreLatest(log);
     if (!restarted)
     {
         comm_.barrier(); // every rank has looked through VTK/ before rank 0 clears it
@@ -66,6 +71,15 @@ RunSummary Simulation<D>::run(RunLog& log)
         const std::string report = distributionReport(step_ - firstStep);
         log.line(report);
     }
+    if (!stoppedBy_.empty())
+    {
+        log.line("Stopped     by " + stoppedBy_ + " at step " + std::to_string(step_) +
+                 ", t = " + formatNumber(time_, 9) + " s (written, restartable: continue with "
+                 "'startFrom latestTime;'" +
+                 (stoppedBy_ == StopCode::describe(StopCode::writeNow)
+                      ? " and 'stopAt endTime;' in system/controlDict)"
+                      : ")"));
+    }
     const RunSummary summary = log.finish(step_ - firstStep, time_);
     writeSummary(summary, "");
     comm_.barrier(); // no rank leaves before the output is complete
@@ -80,9 +94,17 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
     {
         const bool atReference = moveReference(firstStep);
         // The progress line is due by the wall clock, which each rank reads differently; the
-        // energy sums it triggers are collective, so the ranks agree first.
-        const bool progress = distributed() ? comm_.maximum(log.progressDue() ? 1.0 : 0.0) > 0.0
-                                            : log.progressDue();
+        // energy sums it triggers are collective, so the ranks agree first. A stop asked for on
+        // any rank (a signal) or on rank 0 (controlDict) is agreed on in the same reduction, so
+        // every rank stops at this level.
+        std::vector<double> due{log.progressDue() ? 1.0 : 0.0,
+                                static_cast<double>(stopRequest(log))};
+        if (distributed())
+        {
+            comm_.maximum(due);
+        }
+        const bool progress = due[0] > 0.0;
+        const int stop = static_cast<int>(due[1]);
         const bool wantEnergy = progress || energyWanted(firstStep) || energyBeforeMove_;
         const ForceStatus forces = computeForces(atReference, wantEnergy);
         if (energyBeforeMove_)
@@ -94,8 +116,16 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         chooseTimeStep(step_ == firstStep && !restarted, step_ == firstStep);
         // The run ends at the first level at or after endTime (no shortened last step: a run
         // stopped early follows the same trajectory, so restarts continue bit-identically).
-        const bool last = time_ >= control_.endTime * (1.0 - 1e-12) ||
-                          (control_.maxSteps && step_ - firstStep >= *control_.maxSteps);
+        const bool endReached = time_ >= control_.endTime * (1.0 - 1e-12) ||
+                                (control_.maxSteps && step_ - firstStep >= *control_.maxSteps);
+        // A stop makes this level the last one, written like the one at endTime.
+        const bool last = endReached || stop != StopCode::none;
+        if (last && !endReached)
+        {
+            stoppedBy_ = StopCode::describe(stop);
+            log.line("Stopping    " + stoppedBy_ + ": writing step " + std::to_string(step_) +
+                     ", t = " + formatNumber(time_, 9) + " s");
+        }
         const Step step = stepToTake();
         accelerate();
         applyViscosity();
@@ -125,6 +155,19 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         time_ = step.landsOnTarget ? step.target : time_ + dt;
         ++step_;
     }
+}
+
+template <int D>
+int Simulation<D>::stopRequest(RunLog& log)
+{
+    if (const int signal = StopSignals::caught())
+    {
+        return signal;
+    }
+    const bool writeNow =
+        comm_.rank() == 0 &&
+        controlWatch_->writeNow([&log](const std::string& warning) { log.line(warning); });
+    return writeNow ? StopCode::writeNow : StopCode::none;
 }
 
 // Under writeControl adjustableRunTime the time left to the next output or function-object

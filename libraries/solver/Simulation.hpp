@@ -21,6 +21,8 @@
 // Fixed particles keep x and v = 0; their force is discarded (they stay in every kernel sum).
 // A numerical failure (det F <= 0, NaN, particles crossing in 1D, Δt collapse) writes the last
 // good level and throws NumericalFailure naming step, time, particle and quantity.
+// A stop asked for while running (SIGTERM, SIGINT, `stopAt writeNow`: solver/StopRequest.hpp)
+// makes the next level the last: it is written like the level at endTime, restartable.
 
 #include "artificialViscosity/ArtificialViscosity.hpp"
 #include "contact/Contact.hpp"
@@ -36,6 +38,7 @@
 #include "solver/ParticleFile.hpp"
 #include "solver/RunLog.hpp"
 #include "solver/StateFile.hpp"
+#include "solver/StopRequest.hpp"
 #include "stabilisation/Impenetrability.hpp"
 #include "timeIntegration/TimeIntegration.hpp"
 #include "walls/WallSet.hpp"
@@ -64,6 +67,8 @@ public:
     void checkSetup();
 
     const ParticleSet<D>& particles() const { return particles_; }
+    // After run(): what stopped it before endTime ("SIGTERM", "stopAt writeNow"), else "".
+    const std::string& stoppedBy() const { return stoppedBy_; }
 
 private:
     // A time level as the writer sees it: read-only, the current one or the last good one.
@@ -91,6 +96,9 @@ private:
 
     // Simulation.cpp: the time loop and its phases (reads -> writes)
     void advance(RunLog& log, bool restarted);
+    // This rank's request to stop (StopCode: a signal's number, writeNow, none); rank 0 reads
+    // controlDict again when it changed.
+    int stopRequest(RunLog& log);
     // The step from this level (see writeControl): its length, and whether it ends exactly on
     // an output time `target` (then the new time is set to it, free of accumulated round-off).
     struct Step
@@ -180,6 +188,9 @@ private:
     void writeSummary(const RunSummary& summary, const std::string& failure) const;
     void removeOldOutput();
     void writeOutput(const LevelView& level, const FunctionState& functionState);
+    // startFrom latestTime: the newest restartable output (false: none, start afresh);
+    // startFrom startTime with startTime > 0: the output written at that time (InputError when
+    // there is none, listing the written times).
     bool restoreLatest(RunLog& log);
 
     const CaseDictionaries& dicts_;
@@ -247,6 +258,11 @@ private:
     std::vector<Vec<D>> gatheredAt_; // the local particles' x^r when the ghosts were gathered
     std::vector<Vec<D>> gatheredX_;  // and their x (contact, viscosity)
     std::string lastOutputFile_;  // in VTK/, the last output written (.vtu or .pvtu)
+
+    // A graceful stop (solver/StopRequest.hpp): controlDict's stopAt while running (rank 0),
+    // and what stopped the run ("" when it reached endTime).
+    std::optional<ControlDictWatch> controlWatch_;
+    std::string stoppedBy_;
 };
 
 } // namespace sph

@@ -47,8 +47,9 @@ void Simulation<D>::writeSummary(const RunSummary& summary, const std::string& f
     json["artificialViscosity"] = viscosity_->summary();
     json["timeIntegration"] = integrator_->summary();
     json["courant"] = control_.courant;
-    json["status"] = failure.empty() ? "finished" : "failed";
+    json["status"] = !failure.empty() ? "failed" : stoppedBy_.empty() ? "finished" : "stopped";
     json["failure"] = failure;
+    json["stoppedBy"] = stoppedBy_; // "SIGTERM", "SIGINT", "stopAt writeNow"; "" otherwise
     json["endTime"] = control_.endTime;
     json["time"] = time_;
     json["steps"] = summary.steps;

@@ -2,24 +2,91 @@
 // the registries (SimulationOutput.cpp writes it) and continues bit-identically.
 #include "solver/Simulation.hpp"
 
+#include "core/Format.hpp"
 #include "core/InputError.hpp"
 #include "io/PvtuFile.hpp"
 #include "io/VtuFile.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <optional>
 
 namespace sph
 {
 
+namespace
+{
+
+// The entry of the series written at `chosen` (the nearest within a relative 1e-6, so that a
+// time copied from the log or the error below matches), if any.
+const PvdSeries::Entry* entryAt(const PvdSeries& series, double chosen)
+{
+    const PvdSeries::Entry* nearest = nullptr;
+    for (const auto& entry : series.entries())
+    {
+        if (std::abs(entry.time - chosen) <= 1e-6 * chosen &&
+            (!nearest || std::abs(entry.time - chosen) < std::abs(nearest->time - chosen)))
+        {
+            nearest = &entry;
+        }
+    }
+    return nearest;
+}
+
+// "0, 0.0002, 0.0004" (at most 20: the first and last ten around a gap).
+std::string writtenTimes(const PvdSeries& series, const std::filesystem::path& folder)
+{
+    std::vector<double> times;
+    for (const auto& entry : series.entries())
+    {
+        if (std::filesystem::exists(folder / entry.file))
+        {
+            times.push_back(entry.time);
+        }
+    }
+    std::string text;
+    for (std::size_t i = 0; i < times.size(); ++i)
+    {
+        if (times.size() > 20 && i == 10)
+        {
+            text += ", ... (" + std::to_string(times.size() - 20) + " more)";
+            i = times.size() - 10;
+        }
+        text += (text.empty() ? "" : ", ") + formatNumber(times[i], 9);
+    }
+    return text;
+}
+
+} // namespace
+
 template <int D>
 bool Simulation<D>::restoreLatest(RunLog& log)
 {
     pvd_.load();
     const std::filesystem::path folder = dicts_.caseDir() / "VTK";
+    // startFrom startTime with startTime > 0: that output, or an error naming the written ones.
+    const PvdSeries::Entry* chosen =
+        control_.startTime ? entryAt(pvd_, *control_.startTime) : nullptr;
+    if (control_.startTime && (!chosen || !std::filesystem::exists(folder / chosen->file)))
+    {
+        const std::string times = writtenTimes(pvd_, folder);
+        throw InputError(control_.startTimeLocation,
+                         "no output was written at startTime " +
+                             formatNumber(*control_.startTime, 9) + " (the series VTK/" +
+                             pvd_.file().filename().string() + ")",
+                         {times.empty() ? "VTK/ holds no output: run from startTime 0 first."
+                                        : "Written times: " + times + ".",
+                          "startTime 0 starts afresh; 'startFrom latestTime;' continues from "
+                          "the last output."});
+    }
     for (auto entry = pvd_.entries().rbegin(); entry != pvd_.entries().rend(); ++entry)
     {
         const std::filesystem::path path = folder / entry->file;
+        if (chosen && &*entry != chosen)
+        {
+            continue;
+        }
         if (!std::filesystem::exists(path))
         {
             continue;
@@ -43,6 +110,14 @@ bool Simulation<D>::restoreLatest(RunLog& log)
         };
         if (number("restartable") != 1.0)
         {
+            if (chosen)
+            {
+                throw InputError(control_.startTimeLocation,
+                                 "the output at startTime " + formatNumber(entry->time, 9) +
+                                     " ('" + path.string() + "') is not restartable: it is the "
+                                     "last good level written before a numerical failure",
+                                 {"Choose an earlier written time."});
+            }
             continue;
         }
         const std::string file = path.string();
@@ -88,6 +163,8 @@ bool Simulation<D>::restoreLatest(RunLog& log)
         // every rank keeps the same series). Not before every rank has read the series and its
         // output: a rank that read the shortened series would restart from an older level.
         comm_.barrier();
+        const auto later = std::count_if(pvd_.entries().begin(), pvd_.entries().end(),
+                                         [this](const auto& other) { return other.time > time_; });
         pvd_.keepBefore(time_);
         if (comm_.rank() == 0)
         {
@@ -106,7 +183,10 @@ bool Simulation<D>::restoreLatest(RunLog& log)
             }
         }
         log.line("Restart     from " + path.filename().string() + " at step " +
-                 std::to_string(step_) + ", t = " + std::to_string(time_) + " s");
+                 std::to_string(step_) + ", t = " + std::to_string(time_) + " s" +
+                 (later > 0 ? " (the " + std::to_string(later) +
+                                  " later outputs are removed: they are computed again)"
+                            : ""));
         return true;
     }
     log.line("Restart     no restartable output in VTK/; starting from the initial state");

@@ -16,6 +16,10 @@
 #                 ranks (M = 1: serially, without -parallel), ends bit-identical to the
 #                 uninterrupted serial run, with its tables (as bitIdentical)
 #   refused       exit 1 with the one "does not run on several ranks yet" message; no VTK/
+#   signalOneRank the parallel run gets SIGTERM on its last rank alone after its second output:
+#                 every rank stops at the same step (exit 5, summary "stopped" by SIGTERM), and
+#                 continued serially (startFrom latestTime) it ends bit-identical to the
+#                 uninterrupted serial run, with its tables (as bitIdentical)
 # The case is copied into a temporary folder (never written in place). -parallel goes last, so
 # columns in messages about the command line are those of the serial run.
 set -u
@@ -226,6 +230,45 @@ restartOn:*)
     [ "$continueRanks" = 1 ] && ending="$stem.vtu"
     "$bin/compareOutputs" "$work/serial/$name/VTK/$last" "$dir/VTK/$ending" ||
         fail "$ending differs from the serial run's $last"
+    compareTables "$dir"
+    ;;
+signalOneRank)
+    runSerial "$@"
+    expectCode "$serialCode" 0 "the serial run"
+    copyCase "$work/stopped"
+    dir="$work/stopped/$name"
+    (cd "$dir" && exec "$mpiexec" --oversubscribe -np "$ranks" "$bin/sphSolid" -case . "$@" \
+        -parallel >"$work/first.log" 2>&1) &
+    launcher=$!
+    for _ in $(seq 600); do
+        [ "$(grep -c 'file=' "$dir/VTK/$name.pvd" 2>/dev/null)" -ge 2 ] 2>/dev/null && break
+        sleep 0.05
+    done
+    # The last rank: the child of mpirun whose environment says so.
+    target=""
+    for pid in $(pgrep -P "$launcher"); do
+        if tr '\0' '\n' <"/proc/$pid/environ" 2>/dev/null |
+            grep -qx "OMPI_COMM_WORLD_RANK=$((ranks - 1))"; then
+            target=$pid
+        fi
+    done
+    [ -n "$target" ] || fail "no rank $((ranks - 1)) among the children of mpirun"
+    [ -n "$target" ] && kill -TERM "$target"
+    wait "$launcher"
+    expectCode "$?" 5 "the run stopped by SIGTERM on $ranks ranks"
+    cat "$work/first.log"
+    output=$(cat "$work/first.log")
+    expectOnce "Stopping    SIGTERM: writing step"
+    grep -q '"stoppedBy": "SIGTERM"' "$dir/postProcessing/summary.json" ||
+        fail "summary.json does not say stopped by SIGTERM"
+    (cd "$dir" && "$bin/sphSolid" -case . "$@" -set controlDict.startFrom=latestTime \
+        >"$work/second.log" 2>&1)
+    expectCode "$?" 0 "the serial continuation"
+    cat "$work/second.log"
+    grep -q "^Restart     from $name" "$work/second.log" || fail "the continuation did not restart"
+    last=$(grep -o 'file="[^"]*"' "$work/serial/$name/VTK/$name.pvd" | tail -1 | cut -d'"' -f2)
+    "$bin/compareOutputs" "$work/serial/$name/VTK/$last" "$dir/VTK/$last" ||
+        fail "$last differs from the serial run's"
     compareTables "$dir"
     ;;
 refused)

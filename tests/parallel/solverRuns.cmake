@@ -96,6 +96,11 @@ sph_add_solver_run("migrating particles with per-sample history bit-identical on
 set_property(TEST "parallel:sphSolid migrating particles with per-sample history bit-identical on 4 ranks"
              APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy wall")
 
+# A graceful stop (SIGTERM to one rank alone): every rank stops at the same step, exit 5, and the
+# run continued serially ends bit-identical to the uninterrupted serial one (issue 32, item 3).
+sph_add_solver_run("stopped by SIGTERM on one of 2 ranks continues bit-identically" 2
+                   ${sphDykaBar} signalOneRank -threads 1)
+
 # Restart N -> M: stopped at 5 ms on N ranks, continued to 10 ms on M ranks (1: serially), the
 # end bit-identical to the uninterrupted serial run (UL gradF: the reference, the integrator and
 # the audit travel through the pieces).

@@ -61,7 +61,7 @@ int runDimension(const CaseDictionaries& dicts, const ControlSettings& control,
     }
     log.line("");
     simulation.run(log);
-    return 0;
+    return simulation.stoppedBy().empty() ? 0 : stoppedExitCode; // stopped: restartable
 }
 
 } // namespace
