@@ -209,6 +209,12 @@ sph_add_solver_run("plastic impact UL gradF elasticState bit-identical on 2 rank
                    bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
                    ${sphImpactUL} -set stabilisation.plasticSamples=elasticState
                    -set controlDict.functions.energy.referenceMoves=yes)
+# With the close-pair energy (docs/theory/impenetrability.md) at a distance where it acts from the
+# first step (0.9 spacings: pairs across a rank's edge read the ghosts' positions).
+sph_add_solver_run("plastic impact UL gradF elasticState impenetrability bit-identical on 2 ranks" 2
+                   ${sphImpact} bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
+                   ${sphImpactUL} -set stabilisation.plasticSamples=elasticState
+                   -set "sphSchemes.impenetrability={ distance 0.9$<SEMICOLON> }")
 # The samples' states travel through the output's pieces: written on 2 ranks, continued on 3
 # and serially.
 foreach(second 3 1)
@@ -221,6 +227,7 @@ foreach(test "plastic impact bit-identical on 2 ranks" "plastic impact bit-ident
              "plastic impact UL gradF per-sample history bit-identical on 3 ranks"
              "plastic impact UL gradF linearised bit-identical on 2 ranks"
              "plastic impact UL gradF elasticState bit-identical on 2 ranks"
+             "plastic impact UL gradF elasticState impenetrability bit-identical on 2 ranks"
              "plastic impact UL gradF restart from 2 on 3 ranks bit-identical"
              "plastic impact UL gradF restart from 2 on 1 ranks bit-identical")
     set_property(TEST "parallel:sphSolid ${test}" APPEND PROPERTY ENVIRONMENT
