@@ -50,14 +50,6 @@ private:
     sighandler_t handler_ = SIG_DFL;
 };
 
-std::string fileText(const std::filesystem::path& file)
-{
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 // Every file under `folder` whose name holds ".tmp" (our temporaries: ".<name>.tmp<pid>").
 std::vector<std::string> temporariesUnder(const std::filesystem::path& folder)
 {
@@ -100,7 +92,7 @@ TEST_CASE("a failed atomic write names the target, keeps the old file, leaves no
     {
         CHECK(std::string(error.what()) == target.string() + ": cannot write: File too large");
     }
-    CHECK(fileText(target) == "good\n");
+    CHECK(test::fileText(target) == "good\n");
     CHECK(temporariesUnder(dir.path()).empty());
 }
 
@@ -169,7 +161,7 @@ TEST_CASE("a .vtu that cannot be written stops the run with exit 4, earlier ones
     {
         INFO("output " << index);
         CHECK(readVtu(vtu(full, index)).pointCount() == 100);
-        CHECK(fileText(vtu(full, index)) == fileText(vtu(free, index)));
+        CHECK(test::fileText(vtu(full, index)) == test::fileText(vtu(free, index)));
     }
     PvdSeries series(full / "VTK" / "block.pvd");
     series.load();

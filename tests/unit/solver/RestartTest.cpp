@@ -14,14 +14,6 @@ using namespace sph;
 namespace
 {
 
-std::string fileText(const std::filesystem::path& file)
-{
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 VtuData lastOutput(const std::filesystem::path& caseDir)
 {
     PvdSeries series(caseDir / "VTK" / (caseDir.filename().string() + ".pvd"));
@@ -44,8 +36,8 @@ void checkRestart(const std::filesystem::path& whole, const std::filesystem::pat
     for (const auto& table : tables)
     {
         INFO(table);
-        CHECK(fileText(whole / "postProcessing" / table / (table + ".dat")) ==
-              fileText(split / "postProcessing" / table / (table + ".dat")));
+        CHECK(test::fileText(whole / "postProcessing" / table / (table + ".dat")) ==
+              test::fileText(split / "postProcessing" / table / (table + ".dat")));
     }
 }
 
@@ -144,8 +136,8 @@ TEST_CASE("restart continues bit-identically: 2D block against walls", "[restart
     for (const std::string table : {"energy", "walls"})
     {
         INFO(table);
-        CHECK(fileText(whole / "postProcessing" / table / (table + ".dat")) ==
-              fileText(split / "postProcessing" / table / (table + ".dat")));
+        CHECK(test::fileText(whole / "postProcessing" / table / (table + ".dat")) ==
+              test::fileText(split / "postProcessing" / table / (table + ".dat")));
     }
     CHECK(test::summaryValue(whole, "functions/walls/pusher_peakNormalForce") ==
           test::summaryValue(split, "functions/walls/pusher_peakNormalForce"));
@@ -183,8 +175,8 @@ static void plasticImpactRestart(const std::vector<std::string>& extra)
     for (const std::string table : {"energy", "wall"})
     {
         INFO(table);
-        CHECK(fileText(whole / "postProcessing" / table / (table + ".dat")) ==
-              fileText(split / "postProcessing" / table / (table + ".dat")));
+        CHECK(test::fileText(whole / "postProcessing" / table / (table + ".dat")) ==
+              test::fileText(split / "postProcessing" / table / (table + ".dat")));
     }
 }
 

@@ -29,14 +29,6 @@ using namespace sph;
 namespace
 {
 
-std::string fileText(const std::filesystem::path& file)
-{
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 nlohmann::json summaryOf(const std::filesystem::path& caseDir)
 {
     std::ifstream in(caseDir / "postProcessing" / "summary.json");
@@ -50,6 +42,21 @@ VtuData lastOutput(const std::filesystem::path& caseDir)
     series.load();
     REQUIRE(!series.entries().empty());
     return readVtu(caseDir / "VTK" / series.entries().back().file);
+}
+
+// A run stopped and continued ends as the uninterrupted one: the last state bit for bit, the
+// tables and the .pvd byte for byte (the same outputs at the same times: the stopped level's
+// file is overwritten by the next output, which has its number).
+void requireSameRun(const std::filesystem::path& whole, const std::filesystem::path& split)
+{
+    test::requireIdenticalState(lastOutput(whole), lastOutput(split));
+    for (const std::string table : {"freeEnd", "energy", "tipError"})
+    {
+        INFO(table);
+        CHECK(test::fileText(whole / "postProcessing" / table / (table + ".dat")) ==
+              test::fileText(split / "postProcessing" / table / (table + ".dat")));
+    }
+    CHECK(test::fileText(whole / "VTK" / "dykaBar.pvd") == test::fileText(split / "VTK" / "dykaBar.pvd"));
 }
 
 // sphSolid running in the background on a case, its output in `log`; killed if the test
@@ -158,11 +165,11 @@ TEST_CASE("SIGTERM stops a run gracefully: a restartable level, the summary, exi
         solver.waitForOutputs(2);
         solver.signal(SIGTERM);
         const int status = solver.wait();
-        INFO(fileText(log));
+        INFO(test::fileText(log));
         REQUIRE(WIFEXITED(status));
         REQUIRE(WEXITSTATUS(status) == stoppedExitCode);
     }
-    const std::string text = fileText(log);
+    const std::string text = test::fileText(log);
     INFO(text);
     CHECK(text.find("Stopping    SIGTERM: writing step") != std::string::npos);
     CHECK(text.find("Stopped     by SIGTERM") != std::string::npos);
@@ -180,16 +187,7 @@ TEST_CASE("SIGTERM stops a run gracefully: a restartable level, the summary, exi
     // Continued, it ends where the uninterrupted run does, bit for bit.
     REQUIRE(test::runSolver(split, {"-set", "controlDict.startFrom=latestTime"}) == 0);
     CHECK(summaryOf(split).at("status") == "finished");
-    test::requireIdenticalState(lastOutput(whole), lastOutput(split));
-    for (const std::string table : {"freeEnd", "energy", "tipError"})
-    {
-        INFO(table);
-        CHECK(fileText(whole / "postProcessing" / table / (table + ".dat")) ==
-              fileText(split / "postProcessing" / table / (table + ".dat")));
-    }
-    // The same outputs at the same times (the stopped level's file is overwritten by the next
-    // output, which has its number).
-    CHECK(fileText(whole / "VTK" / "dykaBar.pvd") == fileText(split / "VTK" / "dykaBar.pvd"));
+    requireSameRun(whole, split);
 }
 
 TEST_CASE("SIGINT stops a run gracefully too and a second signal ends the process at once",
@@ -242,7 +240,7 @@ TEST_CASE("stopAt writeNow written into controlDict while running stops the run 
     std::this_thread::sleep_for(std::chrono::milliseconds(2500));
     REQUIRE(solver.running());
     {
-        const std::string text = fileText(log);
+        const std::string text = test::fileText(log);
         INFO(text);
         CHECK(text.find("WARNING: system/controlDict changed but is not valid: the run goes on "
                         "(stopAt endTime)") != std::string::npos);
@@ -251,7 +249,7 @@ TEST_CASE("stopAt writeNow written into controlDict while running stops the run 
     }
     test::setEntry(controlDict, "stopAt", "writeNow");
     const int status = solver.wait();
-    const std::string text = fileText(log);
+    const std::string text = test::fileText(log);
     INFO(text);
     REQUIRE(WIFEXITED(status));
     CHECK(WEXITSTATUS(status) == stoppedExitCode);
@@ -309,12 +307,5 @@ TEST_CASE("startFrom startTime with startTime T continues from the output writte
     const double splitSteps = test::summaryValue(split, "steps");
     CHECK(splitSteps > 0.0);
     CHECK(splitSteps < wholeSteps);
-    test::requireIdenticalState(lastOutput(whole), lastOutput(split));
-    for (const std::string table : {"freeEnd", "energy", "tipError"})
-    {
-        INFO(table);
-        CHECK(fileText(whole / "postProcessing" / table / (table + ".dat")) ==
-              fileText(split / "postProcessing" / table / (table + ".dat")));
-    }
-    CHECK(fileText(whole / "VTK" / "dykaBar.pvd") == fileText(split / "VTK" / "dykaBar.pvd"));
+    requireSameRun(whole, split);
 }

@@ -82,6 +82,14 @@ int runProcess(const std::string& app, const std::vector<std::string>& args, std
     return status;
 }
 
+std::string fileText(const std::filesystem::path& file)
+{
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
 double summaryValue(const std::filesystem::path& caseDir, const std::string& path)
 {
     std::ifstream in(caseDir / "postProcessing" / "summary.json");

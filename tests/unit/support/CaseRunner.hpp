@@ -34,6 +34,9 @@ Table readTable(const std::filesystem::path& file);
 // A number from the run's postProcessing/summary.json, by path: "functions/energy/maxDrift".
 double summaryValue(const std::filesystem::path& caseDir, const std::string& path);
 
+// A file's bytes as a string (outputs compared byte for byte).
+std::string fileText(const std::filesystem::path& file);
+
 // Replaces or adds `key value;` at the top level of a dictionary file (simple text edit).
 void setEntry(const std::filesystem::path& file, const std::string& key, const std::string& value);
 
