@@ -205,9 +205,12 @@ sph_add_solver_run("plastic impact UL gradF linearised bit-identical on 2 ranks"
 # plasticSamples elasticState (docs/theory/gradF-plastic.md): the samples' states rebased at every
 # move, new pairs started from the neighbour's state (a ghost's, at a rank's edge), F^r the
 # dilation; with the moves' energy tabulated (a collective energy evaluation before each move).
-sph_add_solver_run("plastic impact UL gradF elasticState bit-identical on 2 ranks" 2 ${sphImpact}
-                   bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
+# And with the samples' energy weights chosen at every move (moveWeights conserving, §G9: per-pair
+# state that travels with its particle).
+sph_add_solver_run("plastic impact UL gradF elasticState conserving weights bit-identical on 2 ranks" 2
+                   ${sphImpact} bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
                    ${sphImpactUL} -set stabilisation.plasticSamples=elasticState
+                   -set stabilisation.moveWeights=conserving
                    -set controlDict.functions.energy.referenceMoves=yes)
 # With the close-pair energy (docs/theory/impenetrability.md) at a distance where it acts from the
 # first step (0.9 spacings: pairs across a rank's edge read the ghosts' positions).
@@ -226,7 +229,7 @@ foreach(test "plastic impact bit-identical on 2 ranks" "plastic impact bit-ident
              "plastic impact UL gradF per-sample history bit-identical on 2 ranks"
              "plastic impact UL gradF per-sample history bit-identical on 3 ranks"
              "plastic impact UL gradF linearised bit-identical on 2 ranks"
-             "plastic impact UL gradF elasticState bit-identical on 2 ranks"
+             "plastic impact UL gradF elasticState conserving weights bit-identical on 2 ranks"
              "plastic impact UL gradF elasticState impenetrability bit-identical on 2 ranks"
              "plastic impact UL gradF restart from 2 on 3 ranks bit-identical"
              "plastic impact UL gradF restart from 2 on 1 ranks bit-identical")

@@ -29,14 +29,35 @@ Schema GradF<D>::schema()
                                   "docs/theory/gradF-plastic.md) or linearised (the return's "
                                   "correction at F_a, linearised; for comparison)")
                             .choices({"ownHistory", "elasticState", "linearised"})
-                            .defaultValue("ownHistory"));
+                            .defaultValue("ownHistory"))
+        .add(Key::word("moveWeights",
+                       "plasticSamples elasticState: the samples' energy weights at a reference "
+                       "move: kernel (the new reference's kernel weights, as the paper; "
+                       "consistent, a move may change the energy), conserving (chosen so that no "
+                       "move changes the energy; the quadrature then lags the configuration) or "
+                       "nonIncreasing (so that no move raises it); "
+                       "docs/theory/gradF-plastic.md §G9")
+                 .choices({"kernel", "conserving", "nonIncreasing"})
+                 .defaultValue("kernel"));
 }
 
 template <int D>
 GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
     : linearised_(params.word("plasticSamples") == "linearised"),
-      elasticState_(params.word("plasticSamples") == "elasticState")
+      elasticState_(params.word("plasticSamples") == "elasticState"),
+      weights_(!elasticState_ || params.word("moveWeights") == "kernel" ? MoveWeights::kernel
+               : params.word("moveWeights") == "conserving"                ? MoveWeights::conserving
+                                                                           : MoveWeights::nonIncreasing)
 {
+    // Only samples that carry their elastic state have weights to choose.
+    if (!elasticState_ && params.given("moveWeights") && params.word("moveWeights") != "kernel")
+    {
+        params.fail("moveWeights",
+                    "moveWeights " + params.word("moveWeights") +
+                        " chooses the energy weights of samples that carry their elastic state, "
+                        "but plasticSamples is " + params.word("plasticSamples"),
+                    {"hint: add 'plasticSamples elasticState;' or remove moveWeights"});
+    }
 }
 
 template <int D>
@@ -292,8 +313,14 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 {
                     scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
                 }
-                evaluateSamples(a, material, list, count, wantEnergy ? scratch.psi.data() : nullptr,
-                                scratch, true);
+                const bool weighted = samples_.weighted() && material.hasHistory();
+                const bool choose = weighted && weightsDue_;
+                evaluateSamples(a, material, list, count,
+                                wantEnergy || choose ? scratch.psi.data() : nullptr, scratch, true);
+                if (weighted)
+                {
+                    useEnergyWeights(a, material, list, kin.F, true, scratch);
+                }
                 if (material.hasHistory() && !linearised_)
                 {
                     double dissipation = 0.0;
@@ -362,6 +389,11 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
             out.T[c] = -ref.V[c] * sum - UL_[c] * ref.gradient.e[c] + selfTerm_[c];
         }
     }
+    if (weightsDue_)
+    {
+        weightsDue_ = false;
+        samples_.clearLeaving();
+    }
     ForceStatus status = combine(tallies);
     checkForces<D>(out.T, status, in.owned);
     return status;
@@ -396,6 +428,11 @@ double GradF<D>::energy(const ForceInput<D>& in)
                 scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
             }
             evaluateSamples(a, material, list, count, scratch.psi.data(), scratch, false);
+            if (samples_.weighted() && material.hasHistory())
+            {
+                // Between a move and the evaluation after it: the weights it will choose.
+                useEnergyWeights(a, material, list, kin.F, false, scratch);
+            }
             for (std::size_t j = 0; j < count; ++j)
             {
                 sum += scratch.w[j] * scratch.psi[j];

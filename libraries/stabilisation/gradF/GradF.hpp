@@ -63,7 +63,7 @@ public:
     {
         if (!linearised_)
         {
-            samples_.declare(materials, fields);
+            samples_.declare(materials, fields, weights_ != MoveWeights::kernel);
         }
     }
     void moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
@@ -101,8 +101,10 @@ public:
         std::vector<Mat<D>> P;  // P(F_b(a))
         std::vector<double> psi;
         std::vector<double> dissipation; // per unit initial volume, by a commit at F_b(a)
+        std::vector<double> omega;       // energy weights chosen at a move (§G9)
         void resize(std::size_t n)
         {
+            omega.resize(n);
             dissipation.resize(n);
             xr.resize(n);
             w.resize(n);
@@ -138,6 +140,16 @@ private:
     // samples at the last evaluation (what its commit dissipates).
     bool linearised_ = false;   // plasticSamples linearised
     bool elasticState_ = false; // plasticSamples elasticState
+    // moveWeights (§G9): the samples' energy weights are chosen at each move (per-pair state in
+    // samples_), and the evaluation after a move (weightsDue_) chooses them.
+    enum class MoveWeights
+    {
+        kernel,
+        conserving,
+        nonIncreasing
+    };
+    MoveWeights weights_ = MoveWeights::kernel;
+    bool weightsDue_ = false;
     // elasticState: the particles with history, whose K the move sets to zero and whose F^r
     // it sets to the dilation J^(1/D) I (§G4), marked by moveHistory() for the
     // referenceUpdate() that follows it.
@@ -151,6 +163,13 @@ private:
     // pending, also the states a commit would make of them (a force evaluation).
     void evaluateSamples(std::size_t a, const Material<D>& material, const NeighbourList& list,
                          std::size_t count, double* psi, Scratch& scratch, bool pending);
+    // moveWeights (§G9): puts particle a's energy weights into scratch.w in place of the
+    // kernel's: those of its samples, or, in the first evaluation after a move (weightsDue_),
+    // chosen from scratch.psi, the samples' energies at the reference (F_b(a) = Fr for all b),
+    // and kept for the samples when `keep`; the kernel's on a first layout. Returns the energy
+    // the choice could not keep (0 to round-off).
+    double useEnergyWeights(std::size_t a, const Material<D>& material, const NeighbourList& list,
+                            const Mat<D>& Fr, bool keep, Scratch& scratch);
 };
 
 } // namespace sph

@@ -2,8 +2,10 @@
 // reference configuration does to the samples' states and the particles' own. The samples'
 // evaluation and commit are those of every per-sample history (GradFHistory.cpp); the frame
 // F^r = J^(1/D) I and K = 0 are set by referenceUpdate (GradF.cpp) for the particles marked here.
+#include "stabilisation/gradF/EnergyWeights.hpp"
 #include "stabilisation/gradF/GradF.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -30,6 +32,7 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
                                "list (a move must come after a force evaluation)");
     }
     spatialFrame_.assign(n, 0);
+    weightsDue_ = samples_.weighted(); // the evaluation after the move chooses them (§G9)
 #pragma omp parallel if (useThreads(n))
     {
         Scratch scratch;
@@ -56,11 +59,93 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
     }
 }
 
-// GradF<D> is instantiated in GradF.cpp; this member is defined here.
+// moveWeights (§G9). The samples' energy E_a before the move = Σ_kept ω_ab W_ab (their W is
+// unchanged by the move, G4.1) + Σ_left ω_ab W_ab (the pairs that left, from their rebased
+// states at F^r_a); new pairs had ω = 0.
+template <int D>
+double GradF<D>::useEnergyWeights(std::size_t a, const Material<D>& material,
+                                  const NeighbourList& list, const Mat<D>& Fr, bool keep,
+                                  Scratch& scratch)
+{
+    const std::size_t first = list.begin(a);
+    const std::size_t count = list.count(a);
+    double* kept = &samples_.weight(first);
+    double* omega = scratch.omega.data();
+    double residual = 0.0;
+    if (std::isnan(kept[0])) // a first layout: the kernel's
+    {
+        std::copy(scratch.w.begin(), scratch.w.begin() + static_cast<long>(count), omega);
+    }
+    else if (weightsDue_)
+    {
+        double before = 0.0;
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            before += kept[j] * scratch.psi[j];
+        }
+        const std::size_t left = samples_.leavingCount(a);
+        if (left > 0)
+        {
+            std::vector<Mat<D>> F(left, Fr);
+            std::vector<Mat<D>> P(left);
+            std::vector<double> psi(left);
+            material.evaluate(F.data(), P.data(), psi.data(), left,
+                              HistoryOf::samples(samples_.leavingStates(a), samples_.stride()));
+            const double* leftWeights = samples_.leavingWeights(a);
+            for (std::size_t i = 0; i < left; ++i)
+            {
+                before += leftWeights[i] * psi[i];
+            }
+        }
+        const bool nonIncreasing = weights_ == MoveWeights::nonIncreasing;
+        EnergyWeightsResult chosen = chooseEnergyWeights(scratch.w.data(), scratch.psi.data(),
+                                                         count, before, nonIncreasing, omega);
+        if (!chosen.reached)
+        {
+            // Out of reach of the kernel's support: widen the base to the pairs the old
+            // weights used, ½ (Ŵ' + ω) (§G9).
+            std::vector<double> base(count);
+            double sum = 0.0;
+            for (std::size_t j = 0; j < count; ++j)
+            {
+                base[j] = 0.5 * (scratch.w[j] + kept[j]);
+                sum += base[j];
+            }
+            for (double& value : base)
+            {
+                value /= sum;
+            }
+            chosen = chooseEnergyWeights(base.data(), scratch.psi.data(), count, before,
+                                         nonIncreasing, omega);
+        }
+        residual = chosen.residual;
+    }
+    else
+    {
+        std::copy(kept, kept + count, omega);
+    }
+    if (keep)
+    {
+        std::copy(omega, omega + count, kept);
+    }
+    std::copy(omega, omega + count, scratch.w.begin());
+    return residual;
+}
+
+// GradF<D> is instantiated in GradF.cpp; these members are defined here.
+template double GradF<1>::useEnergyWeights(std::size_t, const Material<1>&,
+                                             const NeighbourList&, const Mat<1>&, bool,
+                                             Scratch&);
 template void GradF<1>::moveHistory(const std::vector<Vec<1>>&, const ReferenceConfiguration<1>&,
                                      const std::vector<int>&, const std::vector<Material<1>*>&);
+template double GradF<2>::useEnergyWeights(std::size_t, const Material<2>&,
+                                             const NeighbourList&, const Mat<2>&, bool,
+                                             Scratch&);
 template void GradF<2>::moveHistory(const std::vector<Vec<2>>&, const ReferenceConfiguration<2>&,
                                      const std::vector<int>&, const std::vector<Material<2>*>&);
+template double GradF<3>::useEnergyWeights(std::size_t, const Material<3>&,
+                                             const NeighbourList&, const Mat<3>&, bool,
+                                             Scratch&);
 template void GradF<3>::moveHistory(const std::vector<Vec<3>>&, const ReferenceConfiguration<3>&,
                                      const std::vector<int>&, const std::vector<Material<3>*>&);
 

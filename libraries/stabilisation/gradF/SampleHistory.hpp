@@ -18,6 +18,12 @@
 // commits them itself, as it does its particle history), and they are restart data; a
 // restart, or an exchange, leaves them in particle order, and follow() lays them out along the
 // list again.
+//
+// With energy weights (gradF's moveWeights, docs/theory/gradF-plastic.md §G9) each sample also
+// carries its energy weight ω_ab, chosen at the last move and kept with the pair (a pair new at
+// a move starts with 0, a first layout with none: NaN, the kernel's). The samples that leave
+// the list at a move are set aside, with their weights and states, for the evaluation that
+// follows the move: their energy is part of what the old reference held.
 
 #include "materials/Material.hpp"
 #include "particles/NeighbourList.hpp"
@@ -25,6 +31,7 @@
 #include "particles/ParticleFields.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace sph
@@ -35,8 +42,10 @@ class SampleHistory final : public RaggedArray
 {
 public:
     // Active when some material has history: numbers per state = the largest of them.
-    void declare(const std::vector<const Material<D>*>& materials, ParticleFields<D>& fields)
+    void declare(const std::vector<const Material<D>*>& materials, ParticleFields<D>& fields,
+                 bool weighted = false)
     {
+        weighted_ = weighted;
         for (const Material<D>* material : materials)
         {
             stride_ = std::max(stride_, material->historyComponents());
@@ -48,6 +57,7 @@ public:
         }
     }
     bool active() const { return stride_ > 0; }
+    bool weighted() const { return weighted_; }
     // Whether the states are laid out along the list last followed (and it has not changed).
     bool current() const { return current_; }
     std::size_t stride() const { return stride_; }
@@ -80,6 +90,11 @@ public:
         // Into a buffer kept between moves (no allocation, no page faults once grown: the
         // reference moves every step). Slots of bodies without history are never read.
         resizePairArray(remapped_, list.pairCount() * stride_);
+        if (weighted_)
+        {
+            remappedWeights_.resize(list.pairCount());
+            keptOld_.assign(neighbours_.size(), 0);
+        }
 #pragma omp parallel if (useThreads(n))
         {
             std::vector<double> owner(stride_, 0.0);
@@ -108,6 +123,17 @@ public:
                     const bool kept = old < oldEnd && neighbours_[old] == b;
                     const double* from = kept ? &states_[old * stride_] : owner.data();
                     const std::size_t local = list.indices[k];
+                    if (weighted_)
+                    {
+                        const bool firstLayout = oldEnd == offsets_[a];
+                        remappedWeights_[k] = kept          ? weights_[old]
+                                              : firstLayout ? std::numeric_limits<double>::quiet_NaN()
+                                                            : 0.0;
+                        if (kept)
+                        {
+                            keptOld_[old] = 1;
+                        }
+                    }
                     // (A particle with no states yet is being laid out for the first time:
                     // its samples start virgin, as its own state does.)
                     if (!kept && !self && Fr && oldEnd > offsets_[a] &&
@@ -120,6 +146,11 @@ public:
                     std::copy(from, from + stride_, &remapped_[k * stride_]);
                 }
             }
+        }
+        if (weighted_)
+        {
+            setAsideLeaving(body, materials);
+            weights_.swap(remappedWeights_);
         }
         states_.swap(remapped_);
         resizePairArray(next_, states_.size()); // every slot of a history body is written before a commit
@@ -139,12 +170,27 @@ public:
     // The committed state in slot k, to be re-expressed when the reference moves (§G4).
     double* committedForMove(std::size_t k) { return &states_[k * stride_]; }
 
+    // Energy weights (weighted() only): of slot k; and the samples particle a lost at the last
+    // follow(): count, their weights and their states (stride() numbers each).
+    double& weight(std::size_t k) { return weights_[k]; }
+    std::size_t leavingCount(std::size_t a) const
+    {
+        return leavingOffsets_.empty() ? 0 : leavingOffsets_[a + 1] - leavingOffsets_[a];
+    }
+    const double* leavingWeights(std::size_t a) const { return &leavingWeights_[leavingOffsets_[a]]; }
+    const double* leavingStates(std::size_t a) const
+    {
+        return &leavingStates_[leavingOffsets_[a] * stride_];
+    }
+    // The evaluation after the move has used them.
+    void clearLeaving() { leavingOffsets_.clear(); }
+
     // The states of the last evaluation become the committed ones.
     void commit() { states_.swap(next_); }
 
     // The ragged field: particle a's samples, each [neighbour's global index, state].
     const std::string& name() const override { return name_; }
-    std::size_t width() const override { return 1 + stride_; }
+    std::size_t width() const override { return 1 + stride_ + (weighted_ ? 1 : 0); }
     std::size_t size() const override { return offsets_.empty() ? 0 : offsets_.size() - 1; }
     std::size_t entries(std::size_t a) const override { return offsets_[a + 1] - offsets_[a]; }
     void get(std::size_t a, double* out) const override
@@ -153,6 +199,10 @@ public:
         {
             *out++ = neighbours_[k];
             out = std::copy(&states_[k * stride_], &states_[(k + 1) * stride_], out);
+            if (weighted_)
+            {
+                *out++ = weights_[k];
+            }
         }
     }
     void assign(const std::vector<std::size_t>& counts, std::vector<double> values) override
@@ -170,17 +220,55 @@ public:
         }
         neighbours_.resize(pairs);
         states_.resize(pairs * stride_);
+        weights_.resize(weighted_ ? pairs : 0);
         for (std::size_t k = 0; k < pairs; ++k)
         {
             const double* in = &values[k * width()];
             neighbours_[k] = in[0];
-            std::copy(in + 1, in + width(), &states_[k * stride_]);
+            std::copy(in + 1, in + 1 + stride_, &states_[k * stride_]);
+            if (weighted_)
+            {
+                weights_[k] = in[1 + stride_];
+            }
         }
         current_ = false;
     }
 
 private:
+    // The old slots follow() did not keep, of particles with history that had samples: their
+    // weights and states, by particle (before the old layout is dropped).
+    void setAsideLeaving(const std::vector<int>& body, const std::vector<const Material<D>*>& materials)
+    {
+        const std::size_t n = offsets_.size() - 1;
+        leavingOffsets_.assign(n + 1, 0);
+        leavingWeights_.clear();
+        leavingStates_.clear();
+        for (std::size_t a = 0; a < n; ++a)
+        {
+            if (materials[static_cast<std::size_t>(body[a])]->historyComponents() > 0)
+            {
+                for (std::size_t old = offsets_[a]; old < offsets_[a + 1]; ++old)
+                {
+                    if (!keptOld_[old])
+                    {
+                        leavingWeights_.push_back(weights_[old]);
+                        leavingStates_.insert(leavingStates_.end(), &states_[old * stride_],
+                                              &states_[(old + 1) * stride_]);
+                    }
+                }
+            }
+            leavingOffsets_[a + 1] = leavingWeights_.size();
+        }
+    }
+
     std::string name_ = "sampleHistory";
+    bool weighted_ = false;
+    std::vector<double> weights_;
+    std::vector<double> remappedWeights_;
+    std::vector<char> keptOld_;
+    std::vector<std::size_t> leavingOffsets_;
+    std::vector<double> leavingWeights_;
+    std::vector<double> leavingStates_;
     std::size_t stride_ = 0;
     bool current_ = false;
     std::vector<double> states_;

@@ -9,7 +9,10 @@
 //   - the paper's gradF: identical for an affine motion, and for a smooth one the difference
 //     falls with the spacing at second order;
 //   - admissibility: every sample at a step's motion from a moved reference has det f > 0, on a
-//     distorted cloud with one-sided (boundary) neighbourhoods.
+//     distorted cloud with one-sided (boundary) neighbourhoods;
+//   - (§G9) moveWeights: with conserving weights a move changes Π by round-off only (pairs
+//     entering and leaving included), with nonIncreasing it never raises it, and the force
+//     between moves stays −∂Π/∂x.
 #include "numerics/NumericsSupport.hpp"
 #include "stabilisation/gradF/GradF.hpp"
 
@@ -316,7 +319,59 @@ double differenceFromPaper(const std::vector<Vec<D>>& cloud, const std::vector<s
     return difference / scale;
 }
 
+// Moves of the reference at yielded, non-uniform states: Π with the new reference (after the
+// evaluation that chooses the weights) against Π with the old one at the same positions, the
+// largest change relative to Π; then the force a step later against −∂Π/∂x.
+template <int D>
+double largestMoveChange(const char* materialText, const std::string& weights,
+                         bool* neverRaises = nullptr)
+{
+    INFO(D << "D " << materialText << " moveWeights " << weights);
+    test::SchemeFixture<D> f(test::schemeCloud<D>(7),
+                             std::string(kElasticState) + " moveWeights " + weights + ";",
+                             materialText, false, test::schemeHOverDx<D>());
+    auto x = test::deformCurrent<D>(f.ref.x, 17);
+    REQUIRE(f.commit(x) > 0.0);
+    double largest = 0.0;
+    for (unsigned move = 0; move < 3; ++move)
+    {
+        const double before = f.energy(x);
+        REQUIRE(f.moveReference(x).ok());
+        f.forces(x); // the evaluation after the move chooses the weights
+        const double after = f.energy(x);
+        largest = std::max(largest, std::abs(after - before) / std::abs(before));
+        if (neverRaises)
+        {
+            *neverRaises = *neverRaises && after <= before * (1.0 + 1e-13);
+        }
+        x = step<D>(x, 0.02, 3 + move);
+        REQUIRE(f.commit(x) >= 0.0);
+    }
+    const auto next = step<D>(x, 0.02, 9);
+    const auto T = f.forces(next);
+    CHECK(test::largestForceError(f, next, T) / test::largestComponent<D>(T) < 1e-6);
+    return largest;
+}
+
 } // namespace
+
+TEST_CASE("gradF elasticState: moveWeights conserving keeps Pi at every move, nonIncreasing "
+          "never raises it (G9.1)",
+          "[plasticity][gradF][moveWeights]")
+{
+    test::loadModelLibraries();
+    for (const char* material : {kPlastic, kDP})
+    {
+        // Kernel weights: the moves change Π (the check below has teeth).
+        CHECK(largestMoveChange<2>(material, "kernel") > 1e-6);
+        CHECK(largestMoveChange<2>(material, "conserving") < 1e-12);
+        CHECK(largestMoveChange<3>(material, "conserving") < 1e-12);
+        bool neverRaises = true;
+        largestMoveChange<2>(material, "nonIncreasing", &neverRaises);
+        largestMoveChange<3>(material, "nonIncreasing", &neverRaises);
+        CHECK(neverRaises);
+    }
+}
 
 TEST_CASE("gradF elasticState: a rebased sample state keeps its elastic state (G4.1)",
           "[plasticity][gradF]")

@@ -196,6 +196,16 @@ TEST_CASE("restart continues bit-identically: 2D plastic impact, gradF elasticSt
                           "controlDict.functions.energy.referenceMoves=yes"});
 }
 
+// The samples' energy weights chosen at every move (moveWeights conserving, §G9) are per-pair
+// restart data, carried with the samples' states.
+TEST_CASE("restart continues bit-identically: 2D plastic impact, gradF elasticState with "
+          "conserving move weights",
+          "[restart][plasticity]")
+{
+    plasticImpactRestart({"-set", "stabilisation.plasticSamples=elasticState", "-set",
+                          "stabilisation.moveWeights=conserving"});
+}
+
 // A .pvd that is a link to itself (a loop) gave "FATAL ERROR (internal) filesystem error";
 // a restart now names the file and the reason (issue 31).
 TEST_CASE("restart: a time series that links to itself is an input error", "[restart][errors]")

@@ -1,0 +1,116 @@
+#pragma once
+// The energy weights a move of the reference chooses for a particle's samples
+// (docs/theory/gradF-plastic.md §G9): of all partitions of unity ω ≥ 0 over the new pairs whose
+// energy Σ_b ω_b W_b equals the energy E the samples held before the move, the one nearest to
+// the kernel's weights Ŵ in relative entropy,
+//
+//     ω_b(λ) = Ŵ_b exp(−λ W_b) / Σ_c Ŵ_c exp(−λ W_c),                                 (G9.2)
+//
+// one scalar λ, found by safeguarded Newton iteration on e(λ) = Σ_b ω_b(λ) W_b, which falls
+// strictly from max W to min W (e'(λ) = −Var_ω(W)).
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace sph
+{
+
+struct EnergyWeightsResult
+{
+    double lambda = 0.0;   // λ of (G9.2), in the units of 1/W
+    double residual = 0.0; // Σ ω W − E left (0 to round-off unless E is out of reach)
+    int iterations = 0;
+    bool reached = true; // the energy asked for is kept (or, nonIncreasing, not exceeded)
+};
+
+// kernel: Ŵ (Σ = 1, ≥ 0), energy: W_b, target: E; the weights into omega (may alias nothing).
+// With nonIncreasing, only an energy above E is corrected (ω = Ŵ where Σ Ŵ W ≤ E).
+inline EnergyWeightsResult chooseEnergyWeights(const double* kernel, const double* energy,
+                                               std::size_t count, double target, bool nonIncreasing,
+                                               double* omega)
+{
+    EnergyWeightsResult result;
+    // Energies relative to the kernel's mean, for the exponentials' range.
+    double mean = 0.0;
+    double spread = 0.0;
+    for (std::size_t j = 0; j < count; ++j)
+    {
+        mean += kernel[j] * energy[j];
+    }
+    for (std::size_t j = 0; j < count; ++j)
+    {
+        if (kernel[j] > 0.0)
+        {
+            spread = std::max(spread, std::abs(energy[j] - mean));
+        }
+    }
+    const double goal = target - mean;
+    // Round-off of the sums: a few ulps of the energies' magnitude.
+    const double tolerance = 8.0 * std::numeric_limits<double>::epsilon() *
+                             (std::abs(mean) + spread + std::abs(target));
+    const auto weightsAt = [&](double lambda, double& e, double& variance) {
+        double z = 0.0;
+        double first = 0.0;
+        double second = 0.0;
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            const double u = energy[j] - mean;
+            const double w = kernel[j] > 0.0 ? kernel[j] * std::exp(-lambda * u) : 0.0;
+            omega[j] = w;
+            z += w;
+            first += w * u;
+            second += w * u * u;
+        }
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            omega[j] /= z;
+        }
+        e = first / z;
+        variance = std::max(second / z - e * e, 0.0);
+    };
+    double e = 0.0;
+    double variance = 0.0;
+    weightsAt(0.0, e, variance);
+    if (std::abs(e - goal) <= tolerance || spread == 0.0 || (nonIncreasing && e <= goal))
+    {
+        std::copy(kernel, kernel + count, omega);
+        result.residual = e - goal;
+        result.reached = std::abs(e - goal) <= tolerance || (nonIncreasing && e <= goal);
+        return result;
+    }
+    // e(λ) − goal falls with λ; bracket its root within |λ| spread ≤ 700 (exp's range).
+    const double bound = 700.0 / spread;
+    double low = -bound;
+    double high = bound;
+    double lambda = 0.0;
+    for (result.iterations = 1; result.iterations <= 100; ++result.iterations)
+    {
+        if (e > goal)
+        {
+            low = lambda;
+        }
+        else
+        {
+            high = lambda;
+        }
+        double next = variance > 0.0 ? lambda + (e - goal) / variance : 0.5 * (low + high);
+        if (!(next > low && next < high))
+        {
+            next = 0.5 * (low + high); // Newton left the bracket
+        }
+        lambda = next;
+        weightsAt(lambda, e, variance);
+        if (std::abs(e - goal) <= tolerance || high - low <= 1e-15 * bound)
+        {
+            break;
+        }
+    }
+    result.lambda = lambda;
+    result.residual = e - goal;
+    result.reached = std::abs(e - goal) <= tolerance || (nonIncreasing && e <= goal);
+    return result;
+}
+
+} // namespace sph
