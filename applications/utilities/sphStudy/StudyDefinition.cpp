@@ -239,7 +239,7 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict,
                               " (sphStudy -listTypes studyMetric)"});
         }
         study.metrics.push_back(
-            selectModel<StudyMetric>(entry.dict(), {study, entry.key()}, 0));
+            selectModel<StudyMetric>(entry.dict(), {study, entry.key(), caseDir}, 0));
     }
     if (study.metrics.empty())
     {
