@@ -70,7 +70,10 @@ int sphSolidMain(int argc, const char* const* argv)
 {
     CommandLine commandLine("sphSolid", "SPH for elastic and hyperelastic solids: runs a case");
     commandLine.options().add_options()(
-        "threads", boost::program_options::value<int>()->value_name("N"),
+        "threads",
+        integerOption("threads", 1, maxThreads,
+                      "more threads than cores only slow a run down (this machine has " +
+                          std::to_string(omp_get_num_procs()) + ")"),
         "number of OpenMP threads (default: OMP_NUM_THREADS or all cores)")(
         "parallel", "run on the MPI ranks of mpirun (mpirun -np N sphSolid -parallel)");
     if (!commandLine.parse(argc, argv))
@@ -79,12 +82,7 @@ int sphSolidMain(int argc, const char* const* argv)
     }
     if (commandLine.values().count("threads"))
     {
-        const int threads = commandLine.values()["threads"].as<int>();
-        if (threads < 1)
-        {
-            throw InputError("-threads must be at least 1 (got " + std::to_string(threads) + ")");
-        }
-        omp_set_num_threads(threads);
+        omp_set_num_threads(static_cast<int>(commandLine.values()["threads"].as<long>()));
     }
     LibraryLoader::loadDefaultLibraries();
     const std::filesystem::path caseDir = commandLine.caseDir();
