@@ -12,6 +12,7 @@
 #include "core/CommandLine.hpp"
 #include "core/LibraryLoader.hpp"
 #include "core/ModelListing.hpp"
+#include "core/Process.hpp"
 
 #include <iostream>
 
@@ -88,6 +89,9 @@ int study(int argc, char** argv)
         }
         return 0;
     }
+    // Stopping the study stops the run under way (gracefully: sphSolid writes its last level)
+    // and the study with it; its children die with it even when it is killed (core/Process).
+    sph::forwardStopSignals();
     const std::filesystem::path binDir = sph::LibraryLoader::libraryDirectory() / ".." / "bin";
     sph::StudyRunner runner(commandLine.caseDir(), definition, binDir.lexically_normal());
     const auto results = runner.run();
