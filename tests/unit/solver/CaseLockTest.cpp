@@ -99,6 +99,12 @@ TEST_CASE("a second run in a case refuses and names the first, a killed run's lo
         CHECK_THAT(output, Catch::Contains("Wait until that run ends"));
         // A dry run writes nothing: it may read a case in use.
         CHECK(test::runProcess("sphSolid", {"-case", caseDir.string(), "-dryRun"}) == 0);
+        // Nor may sphParticles write the particles of a case in use.
+        output.clear();
+        CHECK(test::runProcess("sphParticles", {"-case", caseDir.string()}, &output) == 1);
+        CHECK_THAT(output, Catch::Contains("is in use: sphSolid, pid " +
+                                           std::to_string(first.pid())));
+        CHECK(test::runProcess("sphParticles", {"-case", caseDir.string(), "-dryRun"}) == 0);
         first.signal(SIGKILL); // no chance to release the lock's file
         first.wait();
     }
