@@ -139,7 +139,8 @@ TEST_CASE("sphSolid started as several processes by mpirun without -parallel ref
     }
 }
 
-TEST_CASE("the run under way ends with sphStudy, killed or stopped", "[lock][study]")
+TEST_CASE("the run under way ends with sphStudy, killed or stopped, and one study runs at a time",
+          "[lock][study]")
 {
     test::TempDir dir;
     const auto caseDir = test::writeBlockCase(dir.path() / "block", schemes, 1e-3, 1e-4);
@@ -158,6 +159,19 @@ TEST_CASE("the run under way ends with sphStudy, killed or stopped", "[lock][stu
         std::ifstream in(run / "postProcessing" / "summary.json");
         REQUIRE(in);
         CHECK(nlohmann::json::parse(in).at("stoppedBy") == "SIGTERM");
+    }
+    SECTION("a second study in the same folder refuses: it would remove the first one's runs")
+    {
+        test::BackgroundProcess study("sphStudy", {"-case", caseDir.string()}, dir.path() / "log");
+        const pid_t solver = solverOf(study, run);
+        std::string output;
+        CHECK(test::runProcess("sphStudy", {"-case", caseDir.string()}, &output) == 1);
+        CHECK_THAT(output, Catch::Contains("is in use: sphStudy, pid " +
+                                           std::to_string(study.pid())));
+        CHECK(test::alive(solver)); // the first study's run goes on
+        CHECK(std::filesystem::exists(run / "VTK" / "long_1.vtu"));
+        study.signal(SIGTERM);
+        study.wait();
     }
     SECTION("stopped: SIGTERM reaches the run, then ends the study, which records nothing")
     {
