@@ -20,6 +20,23 @@ const char* projectVersion()
     return SPH_VERSION;
 }
 
+po::typed_value<long>* integerOption(const std::string& name, long min, long max,
+                                     const std::string& why)
+{
+    return po::value<long>()->value_name("N")->notifier(
+        [=](long value)
+        {
+            if (value < min || value > max)
+            {
+                // Caught in CommandLine::parse, which points at the value.
+                throw po::error_with_option_name("-" + name + " " + std::to_string(value) +
+                                                     " is outside [" + std::to_string(min) +
+                                                     ", " + std::to_string(max) + "]: " + why,
+                                                 name);
+            }
+        });
+}
+
 namespace
 {
 

@@ -64,6 +64,15 @@ private:
     std::string invocation_;
 };
 
+// The value of the integer option -`name` (e.g. -threads), which must lie in [min, max]: a value
+// outside is an InputError at its place in the command line, ending with `why`.
+boost::program_options::typed_value<long>* integerOption(const std::string& name, long min,
+                                                         long max, const std::string& why);
+
+// The most OpenMP threads a run may ask for (-threads, studyDict's threads): far more than any
+// node has cores; a larger number is a typo.
+constexpr long maxThreads = 1024;
+
 // The version string of the project (CMake's PROJECT_VERSION).
 const char* projectVersion();
 

@@ -474,7 +474,15 @@ private:
             (std::filesystem::path(file.where.fileName()).parent_path() / file.text)
                 .lexically_normal()
                 .string();
-        const std::string text = readFile(target);
+        std::string text;
+        try
+        {
+            text = readFile(target);
+        }
+        catch (const InputError& unreadable) // a read error (/proc/self/mem): at the #include
+        {
+            throw InputError(file.where, unreadable.message(), unreadable.notes());
+        }
         // Messages about the included file say where it was included from (and from where
         // that file was, for nested includes).
         std::vector<std::string> includedFrom{file.where.prefix()};

@@ -155,6 +155,12 @@ Key& Key::size(int components)
     return *this;
 }
 
+Key& Key::distinct()
+{
+    distinct_ = true;
+    return *this;
+}
+
 Key& Key::selects(std::string family)
 {
     family_ = std::move(family);

@@ -223,6 +223,10 @@ std::vector<std::string> Schema::describe() const
         {
             line += ", one of: " + joinSorted(key.allowedWords(), " ");
         }
+        if (key.distinctNames())
+        {
+            line += ", each name once";
+        }
         line += ")  " + key.doc();
         lines.push_back(line);
     }

@@ -72,6 +72,8 @@ public:
     Key& range(double low, double high, bool lowInclusive = true, bool highInclusive = true);
     Key& choices(std::vector<std::string> words);
     Key& size(int components); // fixed vector size instead of the case dimension
+    // A list of names (fields, bodies) in which no name may appear twice.
+    Key& distinct();
     // The dictionary selects a model of `family` by its `type` (or holds entries that each do,
     // e.g. `functions`). The `type ...` of its doc ("{ type ...; }", appended when absent) is
     // then printed as the family's registered types, looked up at print time so that models
@@ -89,6 +91,7 @@ public:
     const std::vector<std::string>& allowedWords() const { return choices_; }
     int fixedSize() const { return size_; }
     bool namesBodies() const { return bodies_; }
+    bool distinctNames() const { return distinct_; }
     // "word", "list of body names", ...: the value's kind in messages and -listTypes.
     std::string typeText() const;
     bool hasRange() const { return hasMin_ || hasMax_; }
@@ -112,6 +115,7 @@ private:
     std::vector<std::string> choices_;
     int size_ = 0;
     bool bodies_ = false;
+    bool distinct_ = false;
     std::string family_;
 };
 

@@ -2,12 +2,30 @@
 
 #include "InputError.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
-#include <sstream>
 
 namespace sph
 {
+
+namespace
+{
+
+std::string lowerFirst(std::string message)
+{
+    if (!message.empty())
+    {
+        message[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(message[0])));
+    }
+    return message;
+}
+
+} // namespace
 
 std::string unreadableReason(const std::filesystem::path& path)
 {
@@ -19,12 +37,7 @@ std::string unreadableReason(const std::filesystem::path& path)
     }
     if (ec)
     {
-        std::string message = ec.message();
-        if (!message.empty())
-        {
-            message[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(message[0])));
-        }
-        return message;
+        return lowerFirst(ec.message());
     }
     if (std::filesystem::is_directory(status))
     {
@@ -53,14 +66,41 @@ std::string readTextFile(const std::filesystem::path& path, const std::string& w
         throw InputError("cannot read " + what + " '" + path.string() + "': " + reason,
                          std::move(notes));
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
+    // Read with the system's calls, so that a read error is seen: a stream takes it for the
+    // end of the file (`#include "/proc/self/mem"` read as empty; issue 31).
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
     {
-        throw InputError("cannot read " + what + " '" + path.string() + "'", std::move(notes));
+        throw InputError("cannot read " + what + " '" + path.string() + "': " +
+                             lowerFirst(std::strerror(errno)),
+                         std::move(notes));
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    std::string text;
+    char buffer[1 << 16];
+    for (;;)
+    {
+        const ssize_t count = ::read(fd, buffer, sizeof buffer);
+        if (count < 0 && errno == EINTR)
+        {
+            continue;
+        }
+        if (count < 0)
+        {
+            const int error = errno;
+            ::close(fd);
+            throw InputError("cannot read " + what + " '" + path.string() + "': " +
+                                 lowerFirst(std::strerror(error)) + " after " +
+                                 std::to_string(text.size()) + " bytes",
+                             std::move(notes));
+        }
+        if (count == 0)
+        {
+            break;
+        }
+        text.append(buffer, static_cast<std::size_t>(count));
+    }
+    ::close(fd);
+    return text;
 }
 
 } // namespace sph

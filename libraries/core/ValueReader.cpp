@@ -2,8 +2,11 @@
 
 #include "Suggest.hpp"
 
+#include "Format.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sph
 {
@@ -56,6 +59,7 @@ void ValueReader::read(const std::vector<Item>& items, const SourceLocation& key
         for (const Item& element : listItems(item))
         {
             words.push_back(wordValue(element));
+            checkDistinct(element, words);
         }
         break;
     case ValueType::StringList:
@@ -155,10 +159,26 @@ long ValueReader::wholeNumber(const Item& item) const
 
 void ValueReader::checkRange(const Item& item, double value) const
 {
+    checkNormal(item, value);
     if (!key_.inRange(value))
     {
         throw InputError(item.location(),
                          key_.name() + " = " + item.text() + " must lie in " + key_.rangeText(),
+                         notes());
+    }
+}
+
+void ValueReader::checkNormal(const Item& item, double value) const
+{
+    // A subnormal number (4.9e-324) is no physical value of any key: it holds fewer digits than
+    // written and is zero for most arithmetic (yieldStress 4.9e-324 was taken; issue 31).
+    if (value != 0.0 && std::abs(value) < std::numeric_limits<double>::min())
+    {
+        throw InputError(item.location(),
+                         key_.name() + " = " + item.text() + " is below the smallest normal "
+                                                             "number (" +
+                             formatNumber(std::numeric_limits<double>::min()) +
+                             "): is the exponent right?",
                          notes());
     }
 }
@@ -236,6 +256,30 @@ void ValueReader::checkBody(const Item& item) const
                      lines);
 }
 
+void ValueReader::checkDistinct(const Item& item, const std::vector<std::string>& words) const
+{
+    if (!key_.distinctNames() ||
+        std::find(words.begin(), words.end() - 1, words.back()) == words.end() - 1)
+    {
+        return;
+    }
+    std::vector<std::string> lines{"'" + key_.name() + "' lists each name once; is another "
+                                   "name meant here?"};
+    if (key_.namesBodies() && !context_.bodies.empty())
+    {
+        lines.push_back("Bodies (" + std::to_string(context_.bodies.size()) +
+                        "): " + joinSorted(context_.bodies));
+    }
+    for (const std::string& note : notes())
+    {
+        lines.push_back(note);
+    }
+    throw InputError(item.location(),
+                     "'" + item.text() + "' appears twice in '" + key_.name() + "' of '" +
+                         owner_ + "'",
+                     lines);
+}
+
 std::string ValueReader::stringValue(const Item& item) const
 {
     if (item.kind() != Item::Kind::String && item.kind() != Item::Kind::Word)
@@ -290,6 +334,7 @@ std::vector<double> ValueReader::vectorValue(const Item& item, int components) c
                                  element.describe(),
                              notes());
         }
+        checkNormal(element, element.number());
         result.push_back(element.number());
     }
     return result;

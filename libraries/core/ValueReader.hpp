@@ -38,10 +38,13 @@ private:
     std::vector<std::string> notes() const;
     double number(const Item& item) const;
     long wholeNumber(const Item& item) const;
-    void checkRange(const Item& item, double value) const;
+    void checkRange(const Item& item, double value) const;  // checkNormal and the key's range
+    void checkNormal(const Item& item, double value) const; // not subnormal (4.9e-324)
     bool truthValue(const Item& item) const;
     std::string wordValue(const Item& item) const;
     void checkBody(const Item& item) const;
+    // For a Key::distinct list: `item`, the last of `words` read so far, is not a repeat.
+    void checkDistinct(const Item& item, const std::vector<std::string>& words) const;
     std::string stringValue(const Item& item) const;
     const std::vector<Item>& listItems(const Item& item) const;
     std::vector<double> vectorValue(const Item& item, int components) const;

@@ -22,7 +22,7 @@ struct ProfileColumns
 
     static Schema addKeys(Schema schema)
     {
-        return schema.add(Key::bodyList("bodies", "which bodies; () = all").defaultValue("()"))
+        return schema.add(Key::bodyList("bodies", "which bodies; () = all").distinct().defaultValue("()"))
             .add(Key::real("binWidth", "column width [m] (default: the particle spacing)")
                      .positive()
                      .optional());

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -97,23 +96,10 @@ bool DatTable::hasColumn(const std::string& name) const
 
 DatTable readDatTable(const std::filesystem::path& file, DatHeader header)
 {
-    const std::string reason = unreadableReason(file);
-    std::ifstream in;
-    if (reason.empty())
-    {
-        in.open(file);
-    }
-    if (!reason.empty() || !in)
-    {
-        throw InputError("cannot read the table '" + file.string() + "'" +
-                             (reason.empty() ? std::string() : ": " + reason),
-                         {"Function objects write postProcessing/<name>/<name>.dat while the "
-                          "case runs; did the run start, and is the function object's name "
-                          "right?"});
-    }
-    std::ostringstream content;
-    content << in.rdbuf();
-    const std::string text = content.str();
+    const std::string text =
+        readTextFile(file, "the table",
+                     {"Function objects write postProcessing/<name>/<name>.dat while the case "
+                      "runs; did the run start, and is the function object's name right?"});
     std::shared_ptr<const SourceText> source;
     // The text is split into quotable lines only when there is something to report.
     const auto fail = [&](int line, int column, int length, const std::string& message,

@@ -71,15 +71,15 @@ void PvdSeries::load()
     }
 }
 
-void PvdSeries::keepBefore(double time)
+void PvdSeries::keepThrough(double time)
 {
     // A loaded entry holds its time as written, within seriesTimeTolerance of the exact one:
-    // the entry of the level at `time` itself may read as a little less.
-    const double before = time - 2.0 * seriesTimeTolerance * std::abs(time);
+    // the entry of the level at `time` itself may read as a little more.
+    const double through = time + 2.0 * seriesTimeTolerance * std::abs(time);
     std::vector<Entry> kept;
     for (const Entry& entry : entries_)
     {
-        if (entry.time < before)
+        if (entry.time <= through)
         {
             kept.push_back(entry);
         }
@@ -100,7 +100,14 @@ std::vector<std::string> PvdSeries::keepLast(std::size_t count)
 
 void PvdSeries::add(double time, const std::string& file)
 {
-    entries_.push_back({time, file});
+    if (!entries_.empty() && entries_.back().file == file)
+    {
+        entries_.back().time = time;
+    }
+    else
+    {
+        entries_.push_back({time, file});
+    }
     write();
 }
 

@@ -23,13 +23,15 @@ public:
 
     // Reads an existing series (missing file: empty series).
     void load();
-    // Keeps only the entries before `time` (a restart writes that time again; an entry
-    // within the series' rounding of `time` is that level's and goes too).
-    void keepBefore(double time);
+    // Keeps only the entries up to `time`, the level a restart starts from (an entry within the
+    // series' rounding of `time` is that level's and stays: its file is intact until the
+    // restart has written it again, which may fail, e.g. on a full disk; issue 31 item 6).
+    void keepThrough(double time);
     // Keeps only the last `count` entries; returns the files of those dropped (the caller
     // rewrites the series first, then deletes them: the series never names a missing file).
     std::vector<std::string> keepLast(std::size_t count);
-    // Appends an entry and rewrites the file.
+    // Appends an entry, or replaces the last one when it names the same file (a restart's
+    // level written again), and rewrites the file.
     void add(double time, const std::string& file);
     void write() const;
 

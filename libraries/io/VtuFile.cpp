@@ -4,6 +4,7 @@
 #include "core/InputError.hpp"
 #include "core/IoError.hpp"
 #include "io/AtomicFile.hpp"
+#include "io/VtuArrayLengths.hpp"
 #include "io/VtuChecks.hpp"
 
 #include <vtkCallbackCommand.h>
@@ -345,6 +346,7 @@ VtuData readVtu(const std::filesystem::path& file)
                          {"It may be damaged, or written by another program in another format."});
     }
     checkVtuPieceSizes(file);
+    checkVtuArrayLengths(file);
     reader->SetFileName(file.c_str());
     reader->Update();
     vtkUnstructuredGrid* grid = reader->GetOutput();

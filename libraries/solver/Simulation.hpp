@@ -91,6 +91,7 @@ private:
     void setupBodies(const Dictionary& bodies);
     // Sets body b's initial stress (constant/bodies: initialStress { type ...; }).
     void setInitialStress(const Dictionary& dict, std::size_t b);
+    void checkWaveSpeed(const Dictionary& material, std::size_t b) const; // step <= endTime
 
     using FunctionState = std::map<std::string, double>; // "fo:<name>:<key>" -> value
 

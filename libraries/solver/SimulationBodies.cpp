@@ -67,9 +67,29 @@ void Simulation<D>::setInitialStress(const Dictionary& dict, std::size_t b)
         {gravity_, material.density(), material.atRestCoefficient(), &particles_.X,
          &particles_.V0, range.begin, range.end},
         D);
+    // A body at rest holds its initial stress with a small elastic strain: a stress of the order
+    // of E or above (K0 1e300 passed -dryRun and failed at step 0 blaming the scheme; issue 31)
+    // is no state at rest.
+    constexpr double largestStrain = 1.0;
     for (std::size_t a = range.begin; a < range.end; ++a)
     {
         const Eigen::Matrix3d sigma = field->stress(a);
+        const double strain = sigma.cwiseAbs().maxCoeff() / material.youngsModulus();
+        if (!(strain <= largestStrain))
+        {
+            throw InputError(dict.location(),
+                             "body '" + bodyNames_[b] + "': the initial stress at " +
+                                 particleName(a) + " (sigma_xx " + formatNumber(sigma(0, 0)) +
+                                 ", sigma_yy " + formatNumber(sigma(1 % 3, 1 % 3)) +
+                                 ", sigma_zz " + formatNumber(sigma(2, 2)) + " Pa) is " +
+                                 formatNumber(strain) + " times the Young's modulus E = " +
+                                 formatNumber(material.youngsModulus()) +
+                                 " Pa: no body at rest holds it",
+                             {"For geostatic: K0 is the horizontal over the vertical stress, "
+                              "of order 1 (0.5 for a sand at rest; the default of druckerPrager "
+                              "is 1 - sin(phi)).",
+                              "Are E, rho and gravity in Pa, kg/m^3 and m/s^2?"});
+        }
         switch (material.startFromStress(a, sigma))
         {
         case Material<D>::InitialStress::set:
@@ -92,6 +112,28 @@ void Simulation<D>::setInitialStress(const Dictionary& dict, std::size_t b)
                               "druckerPrager is inside its cone)."});
         }
     }
+}
+
+// A body's material makes its own time step courant h / c: one longer than the whole run
+// means a wave speed far below any solid's (E 1e-300 was reported against writeInterval at
+// step 0; issue 31), an input error at the material, -dryRun included.
+template <int D>
+void Simulation<D>::checkWaveSpeed(const Dictionary& material, std::size_t b) const
+{
+    const double c = materials_[b]->waveSpeed(Mat<D>::Identity());
+    const double step = control_.courant * kernel_->h() / c;
+    if (step <= control_.endTime)
+    {
+        return;
+    }
+    throw InputError(material.location(),
+                     "body '" + bodyNames_[b] + "': its material's wave speed c = " +
+                         formatNumber(c) + " m/s makes a time step courant h / c = " +
+                         formatNumber(step) + " s, longer than the whole run (endTime " +
+                         formatNumber(control_.endTime) + " s)",
+                     {"c = sqrt(stiffness / rho): " + materials_[b]->summary() + ".",
+                      "Are E (or mu, kappa) in Pa and rho in kg/m^3? Steel: E 200e9, rho 7800; "
+                      "a soil: E 10e6, rho 2000."});
 }
 
 template <int D>
@@ -144,6 +186,7 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
         materialModels_.push_back(selectModel<Material<D>>(
             p.dict("material"), {&fields_, particles_.bodies[b], &particles_.F}, D));
         materials_.push_back(materialModels_.back().get());
+        checkWaveSpeed(p.dict("material"), b);
         historyMaterials_ = historyMaterials_ || materials_.back()->hasHistory();
         const BodyRange& range = particles_.bodies[b];
         if (p.has("initialStress"))

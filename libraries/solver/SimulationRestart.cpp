@@ -159,13 +159,15 @@ bool Simulation<D>::restoreLatest(RunLog& log)
                 object->restoreState(own);
             }
         }
-        // This level is computed and written again; later outputs are stale (rank 0 clears them;
-        // every rank keeps the same series). Not before every rank has read the series and its
-        // output: a rank that read the shortened series would restart from an older level.
+        // This level is written again, replacing its file atomically; it stays in the series
+        // meanwhile, so that a restart that fails to write it (a full disk) loses nothing.
+        // Later outputs are stale (rank 0 clears them; every rank keeps the same series). Not
+        // before every rank has read the series and its output: a rank that read the shortened
+        // series would restart from an older level.
         comm_.barrier();
-        const auto later = std::count_if(pvd_.entries().begin(), pvd_.entries().end(),
-                                         [this](const auto& other) { return other.time > time_; });
-        pvd_.keepBefore(time_);
+        const std::size_t listed = pvd_.entries().size();
+        pvd_.keepThrough(time_);
+        const std::size_t later = listed - pvd_.entries().size();
         if (comm_.rank() == 0)
         {
             pvd_.write();

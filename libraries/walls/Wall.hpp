@@ -63,6 +63,7 @@ public:
                                          "shape at t = 0 moved by velocity t")
                      .defaultValue("0"))
             .add(Key::bodyList("bodies", "the bodies the wall acts on; () = every body")
+                     .distinct()
                      .defaultValue("()"))
             .add(Key::real("removeAt", "time at which the wall stops acting [s] (absent: never)")
                      .nonNegative()

@@ -16,6 +16,9 @@
 #                 ranks (M = 1: serially, without -parallel), ends bit-identical to the
 #                 uninterrupted serial run, with its tables (as bitIdentical)
 #   refused       exit 1 with the one "does not run on several ranks yet" message; no VTK/
+#   withoutParallel  mpirun -np RANKS sphSolid with -parallel forgotten: the processes refuse
+#                 (each would run the whole case over the same files), mpirun exits non-zero,
+#                 no VTK/ (issue 31 item 11: all exited 0 before)
 #   signalOneRank the parallel run gets SIGTERM on its last rank alone after its second output:
 #                 every rank stops at the same step (exit 5, summary "stopped" by SIGTERM), and
 #                 continued serially (startFrom latestTime) it ends bit-identical to the
@@ -276,6 +279,18 @@ refused)
     expectCode "$code" 1 "the parallel run"
     expectOnce "--> sphSolid FATAL INPUT ERROR"
     expectOnce "does not run on several ranks yet"
+    [ ! -e "$work/parallel/$name/VTK" ] || fail "the run wrote VTK/"
+    ;;
+withoutParallel)
+    copyCase "$work/parallel"
+    output=$(cd "$work/parallel/$name" &&
+        "$mpiexec" --oversubscribe -np "$ranks" "$bin/sphSolid" -case . "$@" 2>&1)
+    code=$?
+    echo "$output"
+    echo "--- exit code $code"
+    [ "$code" != 0 ] || fail "mpirun exited 0"
+    [ "$(occurrences "$output" "sphSolid is one of $ranks processes mpirun started, without -parallel")" -ge 1 ] ||
+        fail "no process refused"
     [ ! -e "$work/parallel/$name/VTK" ] || fail "the run wrote VTK/"
     ;;
 *)

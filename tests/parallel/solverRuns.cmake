@@ -42,6 +42,8 @@ sph_add_solver_run("1D particles crossing diagnosed once on 2 ranks" 2 ${sphDyka
 # What a distributed run cannot do is refused once, before anything is written: a user's
 # function object that does not say it reduces over the ranks (FunctionObject::distributable;
 # the test plugin's keeps a per-particle peak speed and says nothing).
+# -parallel forgotten: two processes that would each run the whole case are refused.
+sph_add_solver_run("without -parallel refused on 2 ranks" 2 ${sphDykaBar} withoutParallel -threads 1)
 sph_add_solver_run("refuses a plugin's function object once on 2 ranks" 2 ${sphDykaBar} refused
                    -threads 1 -set "controlDict.libs=(\"${CMAKE_BINARY_DIR}/tests/plugin/libsphTestPlugin.so\")"
                    -set "functions={peak {type pluginPeakSpeed\;}}")

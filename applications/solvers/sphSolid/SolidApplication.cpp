@@ -2,8 +2,10 @@
 
 #include "core/Application.hpp"
 #include "core/CaseDictionaries.hpp"
+#include "core/CaseLock.hpp"
 #include "core/CommandLine.hpp"
 #include "core/InputError.hpp"
+#include "core/IoError.hpp"
 #include "core/LibraryLoader.hpp"
 #include "core/ModelListing.hpp"
 #include "parallel/Communicator.hpp"
@@ -15,6 +17,7 @@
 #include <omp.h>
 
 #include <iostream>
+#include <memory>
 
 namespace sph
 {
@@ -64,13 +67,55 @@ int runDimension(const CaseDictionaries& dicts, const ControlSettings& control,
     return simulation.stoppedBy().empty() ? 0 : stoppedExitCode; // stopped: restartable
 }
 
+// One run per case folder (core/CaseLock.hpp): rank 0 of a distributed run holds the lock, and
+// every rank stops with its error.
+std::unique_ptr<CaseLock> lockCase(const std::filesystem::path& caseDir, const Communicator& world)
+{
+    std::unique_ptr<CaseLock> lock;
+    std::string refused;
+    std::vector<std::string> notes;
+    if (world.rank() == 0)
+    {
+        try
+        {
+            lock = std::make_unique<CaseLock>(caseDir, "sphSolid");
+        }
+        catch (const InputError& inUse)
+        {
+            refused = "I" + inUse.message();
+            notes = inUse.notes();
+        }
+        catch (const IoError& unwritable)
+        {
+            refused = "O" + std::string(unwritable.what());
+        }
+    }
+    refused = world.broadcast(refused, 0);
+    if (refused.rfind("O", 0) == 0)
+    {
+        throw IoError(refused.substr(1));
+    }
+    if (!refused.empty())
+    {
+        throw InputError(refused.substr(1), notes); // rank 0, which has the notes, prints it
+    }
+    if (lock && !lock->takenOver().empty())
+    {
+        std::cout << "Lock        " << lock->takenOver() << "\n";
+    }
+    return lock;
+}
+
 } // namespace
 
 int sphSolidMain(int argc, const char* const* argv)
 {
     CommandLine commandLine("sphSolid", "SPH for elastic and hyperelastic solids: runs a case");
     commandLine.options().add_options()(
-        "threads", boost::program_options::value<int>()->value_name("N"),
+        "threads",
+        integerOption("threads", 1, maxThreads,
+                      "more threads than cores only slow a run down (this machine has " +
+                          std::to_string(omp_get_num_procs()) + ")"),
         "number of OpenMP threads (default: OMP_NUM_THREADS or all cores)")(
         "parallel", "run on the MPI ranks of mpirun (mpirun -np N sphSolid -parallel)");
     if (!commandLine.parse(argc, argv))
@@ -79,12 +124,7 @@ int sphSolidMain(int argc, const char* const* argv)
     }
     if (commandLine.values().count("threads"))
     {
-        const int threads = commandLine.values()["threads"].as<int>();
-        if (threads < 1)
-        {
-            throw InputError("-threads must be at least 1 (got " + std::to_string(threads) + ")");
-        }
-        omp_set_num_threads(threads);
+        omp_set_num_threads(static_cast<int>(commandLine.values()["threads"].as<long>()));
     }
     LibraryLoader::loadDefaultLibraries();
     const std::filesystem::path caseDir = commandLine.caseDir();
@@ -102,16 +142,27 @@ int sphSolidMain(int argc, const char* const* argv)
         return 0;
     }
 
+    const bool parallel = commandLine.values().count("parallel") > 0;
+    if (!parallel && launchedRanks() > 1)
+    {
+        throw InputError("sphSolid is one of " + std::to_string(launchedRanks()) +
+                             " processes mpirun started, without -parallel: each would run the "
+                             "whole case alone, over the same files",
+                         {"A distributed run: mpirun -np " + std::to_string(launchedRanks()) +
+                              " sphSolid -parallel. A serial run: sphSolid, without mpirun."});
+    }
     CaseDictionaries dicts(caseDir);
     dicts.read({"controlDict", "sphSchemes", "bodies"}, {"particlesDict", "walls"});
     // particlesDict is sphParticles' input; sphSolid reads it only to check the particles.
     dicts.applySets(commandLine.sets(), {"particlesDict"});
     std::cout << "sphSolid " << projectVersion() << "  (" << commandLine.invocation() << ")\n"
               << "Threads     " << omp_get_max_threads() << "\n";
-    if (commandLine.values().count("parallel"))
+    if (parallel)
     {
         std::cout << "Ranks       " << Communicator::world().size() << "\n";
     }
+    const std::unique_ptr<CaseLock> lock =
+        commandLine.dryRun() ? nullptr : lockCase(dicts.caseDir(), Communicator::world());
     const ControlSettings control = ControlSettings::read(dicts);
     loadCaseLibraries(control, dicts.caseDir());
     const SchemeSettings schemes = SchemeSettings::read(dicts.get("sphSchemes"));

@@ -2,6 +2,7 @@
 
 #include "core/Application.hpp"
 #include "core/CaseDictionaries.hpp"
+#include "core/CaseLock.hpp"
 #include "core/CommandLine.hpp"
 #include "core/LibraryLoader.hpp"
 #include "core/ModelListing.hpp"
@@ -65,6 +66,12 @@ int sphParticlesMain(int argc, const char* const* argv)
     {
         std::cout << "Dry run: system/particlesDict is valid; nothing written.\n";
         return 0;
+    }
+    // Not while a run reads or writes the case (core/CaseLock.hpp).
+    const CaseLock lock(dicts.caseDir(), "sphParticles");
+    if (!lock.takenOver().empty())
+    {
+        std::cout << "Lock        " << lock.takenOver() << "\n";
     }
     const std::filesystem::path file = particleFilePath(dicts.caseDir());
     removeStaleTemporaries(file.parent_path()); // of a run killed while writing (io/AtomicFile)

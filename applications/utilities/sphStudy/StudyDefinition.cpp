@@ -1,6 +1,7 @@
 #include "StudyDefinition.hpp"
 #include "StudyMetric.hpp"
 
+#include "core/CommandLine.hpp"
 #include "core/InputError.hpp"
 #include "core/PlainName.hpp"
 #include "core/Schema.hpp"
@@ -27,7 +28,7 @@ Schema studySchema()
                  .min(1)
                  .defaultValue("1"))
         .add(Key::integer("threads", "OpenMP threads per run (0: all cores)")
-                 .min(0)
+                 .range(0, static_cast<double>(maxThreads))
                  .defaultValue("0"))
         .add(Key::dict("metrics", "what each run is measured by: name { type exactSolution | "
                                   "summary | referenceVariant | referenceFile; ... } (sphStudy "
@@ -239,7 +240,7 @@ StudyDefinition StudyDefinition::read(const Dictionary& studyDict,
                               " (sphStudy -listTypes studyMetric)"});
         }
         study.metrics.push_back(
-            selectModel<StudyMetric>(entry.dict(), {study, entry.key()}, 0));
+            selectModel<StudyMetric>(entry.dict(), {study, entry.key(), caseDir}, 0));
     }
     if (study.metrics.empty())
     {

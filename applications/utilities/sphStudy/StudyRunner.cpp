@@ -105,6 +105,10 @@ std::vector<VariantResult> StudyRunner::run()
         std::cout << "[" << i + 1 << "/" << variants.size() << "] " << variants[i].name << ": "
                   << std::flush;
         VariantResult result = runVariant(variants[i]);
+        if (result.status == "finished")
+        {
+            finished_.insert(result.variant.name);
+        }
         computeMetrics(result);
         results.push_back(result);
         std::ostringstream line;
@@ -242,13 +246,17 @@ VariantResult StudyRunner::runVariant(const StudyVariant& variant)
 
 void StudyRunner::computeMetrics(VariantResult& result) const
 {
-    const StudyRun run{result.variant, caseDir_, studyDir_ / "runs"};
+    const StudyRun run{result.variant, caseDir_, studyDir_ / "runs", finished_};
     for (const auto& metric : study_.metrics)
     {
         double value = notAvailable;
         try
         {
             value = metric->evaluate(run);
+        }
+        catch (const MetricDefinitionError&)
+        {
+            throw; // studyDict is wrong: every run would give nothing
         }
         catch (const std::exception&)
         {

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,7 @@ private:
     const StudyDefinition& study_;
     std::filesystem::path binDir_;
     std::filesystem::path studyDir_;
+    std::set<std::string> finished_; // the variants run so far that finished
 };
 
 } // namespace sph

@@ -8,10 +8,12 @@
 #include "StudyRunner.hpp"
 
 #include "core/Application.hpp"
+#include "core/CaseLock.hpp"
 #include "core/CaseDictionaries.hpp"
 #include "core/CommandLine.hpp"
 #include "core/LibraryLoader.hpp"
 #include "core/ModelListing.hpp"
+#include "core/Process.hpp"
 
 #include <iostream>
 
@@ -88,8 +90,19 @@ int study(int argc, char** argv)
         }
         return 0;
     }
+    // Stopping the study stops the run under way (gracefully: sphSolid writes its last level)
+    // and the study with it; its children die with it even when it is killed (core/Process).
+    sph::forwardStopSignals();
     const std::filesystem::path binDir = sph::LibraryLoader::libraryDirectory() / ".." / "bin";
     sph::StudyRunner runner(commandLine.caseDir(), definition, binDir.lexically_normal());
+    // One study at a time in a folder: a second would remove the runs of the first
+    // (core/CaseLock.hpp; the lock file is postProcessing/study/.sphSolid.lock).
+    std::filesystem::create_directories(runner.studyDir());
+    const sph::CaseLock lock(runner.studyDir(), "sphStudy");
+    if (!lock.takenOver().empty())
+    {
+        std::cout << "Lock        " << lock.takenOver() << "\n";
+    }
     const auto results = runner.run();
     sph::writeStudyReport(runner.studyDir(), definition, results);
     std::cout << "Wrote " << (runner.studyDir() / "results.csv").string() << ", results.md and "

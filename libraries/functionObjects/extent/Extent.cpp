@@ -26,7 +26,7 @@ public:
     {
         return FunctionObjectModel<D>::commonSchema()
             .add(Key::word("component", "displacement component").choices({"x", "y", "z"}).optional())
-            .add(Key::bodyList("bodies", "which bodies; () = all").defaultValue("()"));
+            .add(Key::bodyList("bodies", "which bodies; () = all").distinct().defaultValue("()"));
     }
 
     Extent(const Params& params, const typename FunctionObject<D>::Args& args)

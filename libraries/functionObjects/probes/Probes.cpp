@@ -6,7 +6,10 @@
 //   body   | only look in this body                                             | optional
 // Columns: <field>_<component> (x y z; xx xy ..), with _<i> appended when there are several
 // points, e.g. displacement_x or displacement_x_1.
+#include "core/Format.hpp"
 #include "functionObjects/FunctionObjectModel.hpp"
+
+#include <cmath>
 
 namespace sph
 {
@@ -24,6 +27,7 @@ public:
         return FunctionObjectModel<D>::commonSchema()
             .add(Key::vectorList("points", "probe locations, by initial position [m]"))
             .add(Key::wordList("fields", "any of: position displacement velocity F P J")
+                     .distinct()
                      .defaultValue("(displacement velocity)"))
             .add(Key::body("body", "only look in this body").optional());
     }
@@ -50,9 +54,10 @@ public:
             begin = range.begin;
             end = range.end;
         }
-        for (const auto& point : params.vectorList("points"))
+        const auto& points = params.vectorList("points");
+        for (std::size_t i = 0; i < points.size(); ++i)
         {
-            const Vec<D> target = toVec<D>(point);
+            const Vec<D> target = toVec<D>(points[i]);
             std::size_t best = begin;
             for (std::size_t a = begin; a < end; ++a)
             {
@@ -61,6 +66,7 @@ public:
                     best = a;
                 }
             }
+            checkNear(params, i, particles, best, target, begin, end);
             particles_.push_back(best);
         }
         if (particles_.empty())
@@ -132,6 +138,46 @@ public:
     }
 
 private:
+    // The nearest particle lies within maxSpacings of its own spacing from the point: a point
+    // outside the bodies (x = 1e300 found particle 0; issue 31) probes nothing it names.
+    static void checkNear(const Params& params, std::size_t i, const ParticleSet<D>& particles,
+                          std::size_t best, const Vec<D>& target, std::size_t begin,
+                          std::size_t end)
+    {
+        constexpr double maxSpacings = 2.0;
+        const double spacing = std::pow(particles.V0[best], 1.0 / D);
+        const double distance = (particles.X[best] - target).stableNorm(); // 1e300: no overflow
+        if (distance <= maxSpacings * spacing)
+        {
+            return;
+        }
+        Vec<D> low = particles.X[begin];
+        Vec<D> high = particles.X[begin];
+        for (std::size_t a = begin; a < end; ++a)
+        {
+            low = low.cwiseMin(particles.X[a]);
+            high = high.cwiseMax(particles.X[a]);
+        }
+        const auto text = [](const Vec<D>& x)
+        {
+            std::string words;
+            for (int d = 0; d < D; ++d)
+            {
+                words += (d ? " " : "") + formatNumber(x[d]);
+            }
+            return "(" + words + ")";
+        };
+        params.fail("points", i,
+                    "probes: the point " + text(target) + " is " + formatNumber(distance) +
+                        " m from the nearest particle, " + std::to_string(best) + " at " +
+                        text(particles.X[best]) + ": more than " + formatNumber(maxSpacings) +
+                        " spacings (" + formatNumber(maxSpacings * spacing) + " m)",
+                    {"The particles searched lie between " + text(low) + " and " + text(high) +
+                         " m.",
+                     "A probe point is an initial position inside a body (or on its surface); "
+                     "is a coordinate or its unit wrong?"});
+    }
+
     // The particles found for the points: "particles 39 12".
     std::vector<std::string> summaryExtras() const override
     {

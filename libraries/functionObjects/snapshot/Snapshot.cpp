@@ -34,6 +34,7 @@ public:
                      .nonNegative())
             .add(Key::wordList("fields", "any of: displacement velocity F P J body, or a display "
                                          "field of the models (plasticStrain, yielding, ...)")
+                     .distinct()
                      .defaultValue("(P)"));
     }
 

@@ -20,6 +20,7 @@
 //              reference's points (y_top interpolated linearly between column centres) and
 //              where [m]
 // summary.json: the same values at the last row.
+#include "core/CaseFile.hpp"
 #include "core/Format.hpp"
 #include "core/InputError.hpp"
 #include "core/TextFile.hpp"
@@ -64,7 +65,7 @@ public:
         std::vector<std::string> columns{"front", "top", "depositEnd"};
         if (params.has("reference"))
         {
-            readReference(args.caseDir / params.string("reference"), params);
+            readReference(args.caseDir, params);
             columns.push_back("largestDistance");
             columns.push_back("atX");
         }
@@ -240,16 +241,12 @@ private:
         const double t = (x - lower->first) / (upper->first - lower->first);
         return lower->second + t * (upper->second - lower->second);
     }
-    void readReference(const std::filesystem::path& file, const Params& params)
+    void readReference(const std::filesystem::path& caseDir, const Params& params)
     {
-        const std::string reason = unreadableReason(file);
-        if (!reason.empty())
-        {
-            params.fail("reference", "surfaceProfile: cannot read the reference profile '" +
-                                         file.string() + "': " + reason,
-                        {"It is a text file of x y points (',' or blanks), named relative to "
-                         "the case folder."});
-        }
+        const std::filesystem::path file =
+            caseFile(params, "reference", caseDir, "the reference profile",
+                     "It is a text file of x y points (',' or blanks), named relative to the "
+                     "case folder.");
         const std::string text = readTextFile(file, "reference profile", {});
         std::istringstream lines(text);
         std::string line;

@@ -25,10 +25,30 @@
 namespace sph
 {
 
-// Refuses (at `spacing`, with the file:line of the key) a lattice of that spacing over a
-// bounding box of `extent` whose point count a run could not hold: more than 2^31 particles,
-// or more memory than this machine has at the few kB per particle a run needs (a spacing of
-// 1e-300 made sphParticles spin for ever; issue 31). `shape` names the generator.
+// Refuses (at `key`, with the file:line of the key) a body of `count` particles that a run
+// could not hold: more than 2^31 particles, or more memory than this machine has at the few kB
+// per particle a run needs (a spacing of 1e-300 made sphParticles spin for ever; issue 31).
+// `shape` names the generator, `what` says what made the count ("spacing 1e-9 m makes"),
+// `hint` what to change.
+inline void checkParticleCount(const Params& p, const std::string& key, const std::string& shape,
+                               const std::string& what, double count, const std::string& hint)
+{
+    const double bytesPerParticle = 4096.0; // a 3D updated-Lagrangian gradF run: ~3.6 kB
+    const double pages = static_cast<double>(sysconf(_SC_PHYS_PAGES));
+    const double memory = pages * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+    if (!(count <= 2147483647.0) || !(count * bytesPerParticle <= memory))
+    {
+        p.fail(key,
+               shape + ": " + what + " about " + formatScientific(count) +
+                   " particles, which need about " +
+                   formatScientific(count * bytesPerParticle / 1073741824.0) +
+                   " GiB to run (this machine has " + formatNumber(memory / 1073741824.0) +
+                   " GiB)",
+               {hint});
+    }
+}
+
+// checkParticleCount for a lattice of `spacing` over a bounding box of `extent`, at `spacing`.
 template <int D>
 void checkLatticeSize(const Params& p, const std::string& shape, const Vec<D>& extent,
                       double spacing)
@@ -38,20 +58,10 @@ void checkLatticeSize(const Params& p, const std::string& shape, const Vec<D>& e
     {
         count *= std::floor(std::abs(extent[d]) / spacing) + 1.0;
     }
-    const double bytesPerParticle = 4096.0; // a 3D updated-Lagrangian gradF run: ~3.6 kB
-    const double pages = static_cast<double>(sysconf(_SC_PHYS_PAGES));
-    const double memory = pages * static_cast<double>(sysconf(_SC_PAGE_SIZE));
-    if (!(count <= 2147483647.0) || !(count * bytesPerParticle <= memory))
-    {
-        p.fail("spacing",
-               shape + ": spacing " + formatNumber(spacing) + " m makes about " +
-                   formatScientific(count) + " particles, which need about " +
-                   formatScientific(count * bytesPerParticle / 1073741824.0) +
-                   " GiB to run (this machine has " + formatNumber(memory / 1073741824.0) +
-                   " GiB)",
-               {"Choose a larger spacing: the particle count grows as (size / spacing)^" +
-                std::to_string(D) + "."});
-    }
+    checkParticleCount(p, "spacing", shape, "spacing " + formatNumber(spacing) + " m makes",
+                       count,
+                       "Choose a larger spacing: the particle count grows as (size / spacing)^" +
+                           std::to_string(D) + ".");
 }
 
 template <int D>

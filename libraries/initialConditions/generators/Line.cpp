@@ -7,6 +7,8 @@
 //              | exactly; full: every particle gets a whole spacing        | half
 #include "initialConditions/generators/Generator.hpp"
 
+#include <cmath>
+
 namespace sph
 {
 
@@ -37,6 +39,16 @@ public:
         {
             p.fail("end", "line: 'end' must be greater than 'start'");
         }
+        if (!std::isfinite(end_ - start_))
+        {
+            p.fail("end",
+                   "line: from start " + formatNumber(start_) + " to end " + formatNumber(end_) +
+                       " m is longer than a number holds (" + formatNumber(end_ - start_) + ")",
+                   {"The bar's length end - start must be a finite number of metres; is an "
+                    "exponent wrong?"});
+        }
+        checkParticleCount(p, "n", "line", "n = " + std::to_string(n_) + " makes",
+                           static_cast<double>(n_), "Choose a smaller n.");
     }
     GeneratedBody<D> generate() const override
     {

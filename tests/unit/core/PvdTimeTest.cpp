@@ -28,17 +28,18 @@ TEST_CASE("series times: the fewest digits within round-off of the time", "[pvd]
     }
 }
 
-TEST_CASE("series times are written short and a restart's level is dropped though rounded",
+TEST_CASE("series times are written short and a restart's level is kept though rounded",
           "[pvd]")
 {
     test::TempDir dir;
     const auto file = dir.path() / "case.pvd";
-    const double last = std::nextafter(0.5, 1.0); // an output time a little above 0.5
+    const double last = std::nextafter(0.5, 0.0); // an output time a little below 0.5
     {
         PvdSeries series(file);
         series.add(0.0, "case_0.vtu");
         series.add(0.1 + 0.15, "case_1.vtu");
         series.add(last, "case_2.vtu");
+        series.add(0.75, "case_3.vtu");
     }
     std::ifstream in(file);
     std::ostringstream text;
@@ -48,11 +49,19 @@ TEST_CASE("series times are written short and a restart's level is dropped thoug
                                Catch::Contains("timestep=\"0.5\""));
     PvdSeries series(file);
     series.load();
+    REQUIRE(series.entries().size() == 4);
+    CHECK(series.entries()[2].time == 0.5); // as written, within the tolerance of `last`
+    // A restart from the level at `last` (its exact time from the output's TimeValue) keeps
+    // that level although it reads back as a little more, and drops the later ones; until the
+    // level is written again its file is the good one (issue 31 item 6: a restart on a full
+    // disk dropped it from the series).
+    series.keepThrough(last);
     REQUIRE(series.entries().size() == 3);
-    CHECK(series.entries().back().time == 0.5); // as written, within the tolerance of `last`
-    // A restart from the level at `last` (its exact time from the output's TimeValue) writes
-    // that level again: its entry goes although it reads back as a little less.
-    series.keepBefore(last);
-    REQUIRE(series.entries().size() == 2);
-    CHECK(series.entries().back().file == "case_1.vtu");
+    CHECK(series.entries().back().file == "case_2.vtu");
+    // Written again, the level replaces its entry: the series names each file once.
+    series.add(last, "case_2.vtu");
+    REQUIRE(series.entries().size() == 3);
+    CHECK(series.entries().back().time == last);
+    series.add(0.75, "case_3.vtu");
+    CHECK(series.entries().size() == 4);
 }

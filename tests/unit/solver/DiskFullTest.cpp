@@ -74,6 +74,12 @@ std::filesystem::path writeOutputOnlyCase(const std::filesystem::path& folder)
     return caseDir;
 }
 
+// Output `index` of the block case.
+std::filesystem::path vtu(const std::filesystem::path& caseDir, int index)
+{
+    return caseDir / "VTK" / ("block_" + std::to_string(index) + ".vtu");
+}
+
 } // namespace
 
 TEST_CASE("a failed atomic write names the target, keeps the old file, leaves no temporary",
@@ -131,9 +137,6 @@ TEST_CASE("a .vtu that cannot be written stops the run with exit 4, earlier ones
     test::TempDir two;
     const auto free = writeOutputOnlyCase(one.path() / "block");
     REQUIRE(test::runProcess("sphSolid", {"-case", free.string()}) == 0);
-    const auto vtu = [&](const std::filesystem::path& caseDir, int index) {
-        return caseDir / "VTK" / ("block_" + std::to_string(index) + ".vtu");
-    };
     const std::uintmax_t limit = std::filesystem::file_size(vtu(free, 0)) + 16;
     int failing = 1;
     while (std::filesystem::exists(vtu(free, failing)) &&
@@ -167,6 +170,70 @@ TEST_CASE("a .vtu that cannot be written stops the run with exit 4, earlier ones
     series.load();
     CHECK(static_cast<int>(series.entries().size()) == failing);
     CHECK(temporariesUnder(full).empty());
+}
+
+TEST_CASE("a restart that cannot write its level again keeps that level in the series",
+          "[output][diskFull][restart]")
+{
+    // Issue 31 item 6: with the disk still full, a restart from level 4 failed rewriting
+    // level 4; the series then listed 0 to 3 though level 4 was intact, and the next restart
+    // started from 3 and deleted level 4.
+    test::TempDir one;
+    test::TempDir two;
+    const auto free = writeOutputOnlyCase(one.path() / "block");
+    REQUIRE(test::runProcess("sphSolid", {"-case", free.string()}) == 0);
+    const auto stopped = writeOutputOnlyCase(two.path() / "block");
+    REQUIRE(test::runSolver(stopped, {"-set", "endTime=4e-4"}) == 0);
+    const std::string level4 = test::fileText(vtu(stopped, 4));
+    const auto listed = [&]
+    {
+        PvdSeries series(stopped / "VTK" / "block.pvd");
+        series.load();
+        std::vector<std::string> files;
+        for (const auto& entry : series.entries())
+        {
+            files.push_back(entry.file);
+        }
+        return files;
+    };
+    const std::vector<std::string> levels{"block_0.vtu", "block_1.vtu", "block_2.vtu",
+                                          "block_3.vtu", "block_4.vtu"};
+    REQUIRE(listed() == levels);
+    // Room for the series and the log, not for level 4 again; twice, as a user retries.
+    for (int attempt = 0; attempt < 2; ++attempt)
+    {
+        INFO("attempt " << attempt);
+        std::string output;
+        int status = 0;
+        {
+            const FileSizeLimit fileSize(level4.size() - 1);
+            status = test::runProcess("sphSolid",
+                                      {"-case", stopped.string(), "-set",
+                                       "controlDict.startFrom=latestTime"},
+                                      &output);
+        }
+        INFO(output);
+        CHECK(status == 4);
+        CHECK_THAT(output, Catch::Contains("Restart     from block_4.vtu"));
+        CHECK_THAT(output, Catch::Contains("block_4.vtu: cannot write: File too large"));
+        CHECK(listed() == levels);
+        CHECK(test::fileText(vtu(stopped, 4)) == level4);
+        CHECK(temporariesUnder(stopped).empty());
+    }
+    // With room again, the run continues from level 4 as if never interrupted.
+    REQUIRE(test::runSolver(stopped, {"-set", "controlDict.startFrom=latestTime"}) == 0);
+    PvdSeries series(stopped / "VTK" / "block.pvd");
+    series.load();
+    PvdSeries reference(free / "VTK" / "block.pvd");
+    reference.load();
+    REQUIRE(series.entries().size() == reference.entries().size());
+    for (std::size_t index = 0; index < reference.entries().size(); ++index)
+    {
+        INFO("output " << index);
+        CHECK(series.entries()[index].file == reference.entries()[index].file);
+        CHECK(test::fileText(vtu(stopped, static_cast<int>(index))) ==
+              test::fileText(vtu(free, static_cast<int>(index))));
+    }
 }
 
 TEST_CASE("the temporaries a killed run left are removed when the run starts again",

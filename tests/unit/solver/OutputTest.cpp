@@ -3,10 +3,9 @@
 #include "io/PvdSeries.hpp"
 #include "io/VtuFile.hpp"
 #include "solver/SolverCases.hpp"
+#include "support/BackgroundProcess.hpp"
 
-#include <fcntl.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 
 #include <Eigen/LU>
@@ -16,8 +15,6 @@
 #include <fstream>
 #include <sstream>
 #include <thread>
-
-extern char** environ;
 
 using namespace sph;
 
@@ -103,22 +100,10 @@ TEST_CASE("a killed run leaves a readable series that restarts", "[output]")
     test::TempDir dir;
     const auto caseDir = test::copyTutorial("bar1D/dykaBar", dir.path());
     REQUIRE(test::runParticles(caseDir, {"-set", "bar.n=640"}) == 0);
-    const std::string binary = (test::buildDir() / "bin" / "sphSolid").string();
-    const std::string caseArg = caseDir.string();
-    std::vector<std::string> words{binary, "-case", caseArg, "-set", "writeInterval=2e-5",
-                                   "-set", "endTime=1"};
-    std::vector<char*> argv;
-    for (auto& word : words)
-    {
-        argv.push_back(word.data());
-    }
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    pid_t child = 0;
-    REQUIRE(posix_spawn(&child, binary.c_str(), &actions, nullptr, argv.data(), environ) == 0);
-    posix_spawn_file_actions_destroy(&actions);
+    test::BackgroundProcess solver(
+        "sphSolid",
+        {"-case", caseDir.string(), "-set", "writeInterval=2e-5", "-set", "endTime=1"},
+        "/dev/null");
     // Let it write some outputs (the series is valid at every moment), then kill it without
     // warning while it keeps writing.
     PvdSeries series(caseDir / "VTK" / "dykaBar.pvd");
@@ -132,10 +117,8 @@ TEST_CASE("a killed run leaves a readable series that restarts", "[output]")
             break;
         }
     }
-    REQUIRE(kill(child, SIGKILL) == 0);
-    int status = 0;
-    waitpid(child, &status, 0);
-    REQUIRE(WIFSIGNALED(status));
+    solver.signal(SIGKILL);
+    REQUIRE(WIFSIGNALED(solver.wait()));
 
     REQUIRE_NOTHROW(series.load());
     REQUIRE(series.entries().size() >= 8);

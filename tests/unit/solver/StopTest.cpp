@@ -9,9 +9,9 @@
 #include "solver/SolverCases.hpp"
 #include "solver/StopRequest.hpp"
 
-#include <fcntl.h>
+#include "support/BackgroundProcess.hpp"
+
 #include <signal.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,8 +21,6 @@
 #include <fstream>
 #include <sstream>
 #include <thread>
-
-extern char** environ;
 
 using namespace sph;
 
@@ -61,40 +59,14 @@ void requireSameRun(const std::filesystem::path& whole, const std::filesystem::p
 
 // sphSolid running in the background on a case, its output in `log`; killed if the test
 // leaves it running.
-class BackgroundSolver
+class BackgroundSolver : public test::BackgroundProcess
 {
 public:
     BackgroundSolver(const std::filesystem::path& caseDir, const std::vector<std::string>& args,
                      const std::filesystem::path& log)
-        : caseDir_(caseDir)
+        : BackgroundProcess("sphSolid", withCase(caseDir, args), log), caseDir_(caseDir)
     {
-        const std::string binary = (test::buildDir() / "bin" / "sphSolid").string();
-        std::vector<std::string> words{binary, "-case", caseDir.string()};
-        words.insert(words.end(), args.begin(), args.end());
-        std::vector<char*> argv;
-        for (auto& word : words)
-        {
-            argv.push_back(word.data());
-        }
-        argv.push_back(nullptr);
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                         0644);
-        posix_spawn_file_actions_adddup2(&actions, 1, 2);
-        REQUIRE(posix_spawn(&pid_, binary.c_str(), &actions, nullptr, argv.data(), environ) == 0);
-        posix_spawn_file_actions_destroy(&actions);
     }
-    ~BackgroundSolver()
-    {
-        if (pid_ > 0)
-        {
-            kill(pid_, SIGKILL);
-            waitpid(pid_, nullptr, 0);
-        }
-    }
-    BackgroundSolver(const BackgroundSolver&) = delete;
-    BackgroundSolver& operator=(const BackgroundSolver&) = delete;
 
     // Waits until the series holds `count` outputs (at most 60 s).
     void waitForOutputs(std::size_t count) const
@@ -113,28 +85,17 @@ public:
         }
         FAIL("no " << count << " outputs after 60 s");
     }
-    bool running() const { return waitpid(pid_, nullptr, WNOHANG) == 0; }
-    void signal(int number) const { REQUIRE(kill(pid_, number) == 0); }
-    // The wait status once it ends (at most 60 s, then it is killed).
-    int wait()
-    {
-        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-        int status = 0;
-        while (waitpid(pid_, &status, WNOHANG) == 0)
-        {
-            if (std::chrono::steady_clock::now() > deadline)
-            {
-                FAIL("sphSolid did not stop within 60 s");
-            }
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        }
-        pid_ = -1;
-        return status;
-    }
 
 private:
+    static std::vector<std::string> withCase(const std::filesystem::path& caseDir,
+                                             const std::vector<std::string>& args)
+    {
+        std::vector<std::string> all{"-case", caseDir.string()};
+        all.insert(all.end(), args.begin(), args.end());
+        return all;
+    }
+
     std::filesystem::path caseDir_;
-    pid_t pid_ = -1;
 };
 
 // The Dyka bar at 320 particles, an output every 1e-4 s: a few seconds to endTime 1.5e-3.

@@ -180,6 +180,7 @@ TEST_CASE("sphStudy reports mistakes in studyDict at their place", "[study][erro
 {
     TempDir dir;
     const fs::path caseDir = copyTutorial("bar1D/dykaBar", dir.path());
+    std::ofstream(caseDir / "zeros.dat") << "0 0\n1 0\n"; // read when studyDict is read
     // The output of `sphStudy -dryRun` on studyDict with `wrong` replaced by `edit`; exit code 1.
     const auto dryRunWith = [&](const std::string& wrong, const std::string& edit)
     {

@@ -57,7 +57,9 @@ public:
 
     double evaluate(const StudyRun& run) const override
     {
-        return compare(run, readDatTable(run.dirOf(referenceOf(run.variant)) / file_), column_);
+        const std::string reference = referenceOf(run.variant);
+        return compare(run, {runTable(run, reference), column_, "the run " + reference,
+                             run.hasFinished(reference)});
     }
 
     std::string referenceOf(const StudyVariant& variant) const override
