@@ -77,6 +77,7 @@ PlasticHistory<D>::PlasticHistory(const typename Material<D>::Args& args)
         ownFields_->setSize(args.particles.end);
         fields = ownFields_.get();
     }
+    registry_ = fields;
     inversePlastic_ = &fields->template declare<Mat<D>>(inversePlasticField(), Mat<D>::Identity());
     if constexpr (D == 2)
     {

@@ -45,9 +45,12 @@ public:
 
     PlasticState<D> state(std::size_t a) const;
     void store(std::size_t a, const PlasticState<D>& s);
+    // The registry the fields live in (the run's, or this history's own).
+    ParticleFields<D>& registry() const { return *registry_; }
 
 private:
     std::unique_ptr<ParticleFields<D>> ownFields_;
+    ParticleFields<D>* registry_ = nullptr;
     std::vector<Mat<D>>* inversePlastic_ = nullptr;
     std::vector<double>* inversePlasticZZ_ = nullptr; // 2D only
     std::vector<double>* alpha_ = nullptr;

@@ -22,18 +22,10 @@
 
 #include "materials/LogarithmicElasticity.hpp"
 #include "materials/plasticity/PlasticHistory.hpp"
+#include "materials/plasticity/ReturnMemo.hpp"
 
 namespace sph
 {
-
-// What a return did at one point: its plastic multiplier (> 0: the point flows), the α it
-// leads to and the step's dissipation per unit initial volume.
-struct PlasticFlow
-{
-    double deltaGamma = 0.0;
-    double alpha = 0.0;
-    double dissipation = 0.0;
-};
 
 template <int D, class Model>
 class ReturnMapPlasticity : public Material<D>
@@ -57,7 +49,10 @@ public:
 
     double energy(const Mat<D>& F) const override { return returnMap(F, {}, false).energy; }
     Mat<D> stress(const Mat<D>& F) const override { return returnMap(F, {}, false).P; }
-    double waveSpeed(const Mat<D>& F) const override { return waveSpeedOf(F, State{}); }
+    double waveSpeed(const Mat<D>& F) const override
+    {
+        return waveSpeedOf(returnMap(F, State{}, false).maxAbsTau, F);
+    }
     void evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n,
                   HistoryOf history) const override;
     double maxWaveSpeed(const Mat<D>* F, std::size_t n, std::size_t first) const override;
@@ -134,17 +129,22 @@ private:
         }
     }
     // (P2.5) with the stretch of `stretched` (F itself, or f = F Fr⁻¹ (P2.6)).
-    double waveSpeedOf(const Mat<D>& F, const State& state) const { return waveSpeedOf(F, state, F); }
-    double waveSpeedOf(const Mat<D>& F, const State& state, const Mat<D>& stretched) const;
+    // maxAbsTau: the largest |τ| of the return at F (particleReturn's, or returnMap's).
+    double waveSpeedOf(double maxAbsTau, const Mat<D>& stretched) const;
+
+    // The memo of each particle's last return: the time step and the commit reuse the force
+    // evaluation's (written by the one thread that evaluates the particle).
+    typename ReturnMemo<D>::Entry particleReturn(std::size_t a, const Mat<D>& F, const State& s) const;
 
     PlasticHistory<D> history_;
+    mutable ReturnMemo<D> memo_;
 };
 
 template <int D, class Model>
 ReturnMapPlasticity<D, Model>::ReturnMapPlasticity(const Params& params,
                                                    const typename Material<D>::Args& args)
     : Material<D>(params), elastic_(IsotropicElasticity::read<D>(params)), law_(elastic_),
-      history_(args)
+      history_(args), memo_(history_.registry())
 {
     if (args.F && args.fields)
     {
@@ -228,7 +228,14 @@ void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double*
     {
         if (!history.perSample())
         {
-            const Result r = returnMap(F[i], state(history.particle(i)), false, !history.trialAround);
+            const std::size_t a = history.particle(i);
+            const State s = state(a);
+            const bool flow = !history.trialAround;
+            const Result r = returnMap(F[i], s, flow, flow);
+            if (flow)
+            {
+                memo_.store(a, F[i], s, {r.maxAbsTau, r.flow, r.next});
+            }
             P[i] = r.P;
             if (psi)
             {
@@ -305,14 +312,26 @@ PlasticCorrection<D> ReturnMapPlasticity<D, Model>::plasticCorrection(const Mat<
 }
 
 template <int D, class Model>
-double ReturnMapPlasticity<D, Model>::waveSpeedOf(const Mat<D>& F, const State& s,
-                                                  const Mat<D>& stretched) const
+typename ReturnMemo<D>::Entry ReturnMapPlasticity<D, Model>::particleReturn(std::size_t a,
+                                                                           const Mat<D>& F,
+                                                                           const State& s) const
 {
-    const Result r = returnMap(F, s, false);
+    typename ReturnMemo<D>::Entry e;
+    if (!memo_.find(a, F, s, e))
+    {
+        const Result r = returnMap(F, s, true);
+        e = {r.maxAbsTau, r.flow, r.next};
+    }
+    return e;
+}
+
+template <int D, class Model>
+double ReturnMapPlasticity<D, Model>::waveSpeedOf(double maxAbsTau, const Mat<D>& stretched) const
+{
     // (P2.5): the elastic modulus bounds the elastoplastic one; the stretch sets the scale.
     const double M = D == 1 ? elastic_.E : law_.longitudinalModulus();
     const double lowest = stretchSquaredRange<D>(stretched).first;
-    return std::sqrt((M + r.maxAbsTau) / lowest / this->density());
+    return std::sqrt((M + maxAbsTau) / lowest / this->density());
 }
 
 template <int D, class Model>
@@ -323,7 +342,9 @@ double ReturnMapPlasticity<D, Model>::maxWaveSpeedSinceReference(const Mat<D>* F
     double c = 0.0;
     for (std::size_t i = 0; i < n; ++i)
     {
-        c = std::max(c, waveSpeedOf(F[i], state(first + i), Mat<D>(F[i] * Fr[i].inverse())));
+        const std::size_t a = first + i;
+        const double tau = particleReturn(a, F[i], state(a)).maxAbsTau;
+        c = std::max(c, waveSpeedOf(tau, Mat<D>(F[i] * Fr[i].inverse())));
     }
     return c;
 }
@@ -335,7 +356,8 @@ double ReturnMapPlasticity<D, Model>::maxWaveSpeed(const Mat<D>* F, std::size_t 
     double c = 0.0;
     for (std::size_t i = 0; i < n; ++i)
     {
-        c = std::max(c, waveSpeedOf(F[i], state(first + i)));
+        const std::size_t a = first + i;
+        c = std::max(c, waveSpeedOf(particleReturn(a, F[i], state(a)).maxAbsTau, F[i]));
     }
     return c;
 }
@@ -383,7 +405,7 @@ double ReturnMapPlasticity<D, Model>::commit(const Mat<D>* F, const double* V0, 
     for (std::size_t i = 0; i < n; ++i)
     {
         const std::size_t a = first + i;
-        const Result r = returnMap(F[i], state(a), true);
+        const typename ReturnMemo<D>::Entry r = particleReturn(a, F[i], state(a));
         if (r.flow.deltaGamma > 0.0)
         {
             history_.store(a, r.next);

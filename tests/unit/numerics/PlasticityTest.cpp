@@ -476,3 +476,60 @@ TEST_CASE("j2Plasticity: the linearised return correction is second-order accura
     linearisedCorrection<2>();
     linearisedCorrection<3>();
 }
+
+namespace
+{
+
+// Drives a point as the solver does (force evaluation, time step, commit at the same F), and
+// a twin that is only committed: the memo of the return (ReturnMemo) must change nothing.
+template <int D>
+void memoChangesNothing()
+{
+    MaterialPoint<D> memo(j2Text());
+    MaterialPoint<D> fresh(j2Text());
+    for (int step = 1; step <= 12; ++step)
+    {
+        Mat<D> F = stretchX<D>(std::exp(0.002 * step), std::exp(-0.0007 * step));
+        F(0, 1) = 0.001 * step; // not coaxial with the committed Cp⁻¹
+        memo.stress(F);
+        const double cMemo = memo.material->maxWaveSpeed(&F, 1, 0);
+        const double cFresh = fresh.material->maxWaveSpeed(&F, 1, 0);
+        CHECK(cMemo == cFresh);
+        const double dMemo = memo.commit(F);
+        const double dFresh = fresh.commit(F);
+        CHECK(dMemo == dFresh);
+        CHECK(memo.alpha() == fresh.alpha());
+        CHECK(memo.inversePlastic() == fresh.inversePlastic());
+    }
+    CHECK(memo.alpha() > 0.0); // the path yields
+
+    // A commit at another F than the evaluation's recomputes the return.
+    const Mat<D> F1 = stretchX<D>(1.03);
+    const Mat<D> F2 = stretchX<D>(1.035);
+    memo.stress(F1);
+    CHECK(memo.commit(F2) == fresh.commit(F2));
+    CHECK(memo.inversePlastic() == fresh.inversePlastic());
+
+    // A committed state changed behind the material's back (as a restart or a migration
+    // writes the fields) is not the one the memo saw: the return is computed again.
+    const Mat<D> F3 = stretchX<D>(1.045);
+    memo.stress(F3);
+    for (MaterialPoint<D>* point : {&memo, &fresh})
+    {
+        const double alpha = 0.5 * point->alpha();
+        point->fields.find("equivalentPlasticStrain")->array->set(0, &alpha);
+    }
+    CHECK(memo.material->maxWaveSpeed(&F3, 1, 0) == fresh.material->maxWaveSpeed(&F3, 1, 0));
+    CHECK(memo.commit(F3) == fresh.commit(F3));
+    CHECK(memo.alpha() == fresh.alpha());
+}
+
+} // namespace
+
+TEST_CASE("j2Plasticity: the time step and the commit reuse the force evaluation's return, "
+          "bit for bit, and never a stale one",
+          "[plasticity][memo]")
+{
+    memoChangesNothing<2>();
+    memoChangesNothing<3>();
+}
