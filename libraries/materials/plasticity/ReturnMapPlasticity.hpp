@@ -152,11 +152,11 @@ ReturnMapPlasticity<D, Model>::ReturnMapPlasticity(const Params& params,
         const std::vector<Mat<D>>* F = args.F;
         args.fields->template deriveOver<double>(
             PlasticHistory<D>::plasticStrainField(), args.particles.begin, args.particles.end,
-            [this, F](std::size_t a) { return returnMap((*F)[a], state(a), false).flow.alpha; });
+            [this, F](std::size_t a) { return particleReturn(a, (*F)[a], state(a)).flow.alpha; });
         args.fields->template deriveOver<int>(
             PlasticHistory<D>::yieldingField(), args.particles.begin, args.particles.end,
             [this, F](std::size_t a)
-            { return returnMap((*F)[a], state(a), false).flow.deltaGamma > 0.0 ? 1 : 0; });
+            { return particleReturn(a, (*F)[a], state(a)).flow.deltaGamma > 0.0 ? 1 : 0; });
     }
 }
 

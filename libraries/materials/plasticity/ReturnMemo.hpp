@@ -19,15 +19,6 @@
 namespace sph
 {
 
-// What a return did at one point: its plastic multiplier (> 0: the point flows), the α it
-// leads to and the step's dissipation per unit initial volume.
-struct PlasticFlow
-{
-    double deltaGamma = 0.0;
-    double alpha = 0.0;
-    double dissipation = 0.0;
-};
-
 template <int D>
 class ReturnMemo
 {
