@@ -79,6 +79,19 @@ public:
         const Eigen::Vector3d dev = eps - Eigen::Vector3d::Constant(ev / 3.0);
         return this->law_.mu * dev.squaredNorm() + volumetric;
     }
+    // The modulus of the wave-speed bound (plasticity.md (P2.7)) at the returned strains: where
+    // the voids are open (εv > εt) the pressure does not change with εv, so only the shear
+    // modulus acts, and not even that at the apex of a cohesionless cone, where every
+    // admissible state is stress-free; elsewhere the elastic M = K + 4μ/3.
+    double waveModulusOf(const Eigen::Vector3d& eps) const
+    {
+        const double shear = 4.0 * this->law_.mu / 3.0;
+        if (!(eps.sum() > tensileStrength_ / this->law_.K))
+        {
+            return this->law_.longitudinalModulus();
+        }
+        return xi_ * cohesion_ - eta_ * tensileStrength_ > 0.0 ? shear : 0.0;
+    }
     double extraEnergy(const Flow& flow) const { return flow.dissipation; }
     double dissipated(double V0, const Flow& flow) const { return V0 * flow.dissipation; }
 

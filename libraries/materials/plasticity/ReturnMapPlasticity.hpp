@@ -41,7 +41,7 @@ public:
         Mat<D> P;
         double energy = 0.0;    // W, e.g. (P4.2)
         Flow flow;              // flow.deltaGamma > 0: the point flows plastically
-        double maxAbsTau = 0.0; // max |τᵢ| (for the wave-speed bound)
+        double waveModulus = 0.0; // M + max |τᵢ| of the wave-speed bound (P2.5)
         State next;             // the state to commit (when asked for)
     };
     // flow = false: the trial state (the elastic predictor) only.
@@ -51,7 +51,7 @@ public:
     Mat<D> stress(const Mat<D>& F) const override { return returnMap(F, {}, false).P; }
     double waveSpeed(const Mat<D>& F) const override
     {
-        return waveSpeedOf(returnMap(F, State{}, false).maxAbsTau, F);
+        return waveSpeedOf(returnMap(F, State{}, false).waveModulus, F);
     }
     void evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n,
                   HistoryOf history) const override;
@@ -128,9 +128,22 @@ private:
             return law_.energy(eps);
         }
     }
+    // The modulus M of (P2.5) at the returned strains: the model's own (a material that has
+    // opened carries no stress, P2.7), else the elastic longitudinal modulus.
+    double waveModulusAt(const Eigen::Vector3d& eps) const
+    {
+        if constexpr (requires(const Model& m) { m.waveModulusOf(eps); })
+        {
+            return model().waveModulusOf(eps);
+        }
+        else
+        {
+            return law_.longitudinalModulus();
+        }
+    }
     // (P2.5) with the stretch of `stretched` (F itself, or f = F Fr⁻¹ (P2.6)).
-    // maxAbsTau: the largest |τ| of the return at F (particleReturn's, or returnMap's).
-    double waveSpeedOf(double maxAbsTau, const Mat<D>& stretched) const;
+    // waveModulus: M + max |τ| of the return at F (particleReturn's, or returnMap's).
+    double waveSpeedOf(double waveModulus, const Mat<D>& stretched) const;
 
     // The memo of each particle's last return: the time step and the commit reuse the force
     // evaluation's (written by the one thread that evaluates the particle).
@@ -178,7 +191,7 @@ ReturnMapPlasticity<D, Model>::returnMap(const Mat<D>& F, const State& committed
         }
         const double tau = E * eps;
         r.P = Mat<D>::Constant(tau / lambda);
-        r.maxAbsTau = std::abs(tau);
+        r.waveModulus = E + std::abs(tau);
         r.energy = 0.5 * E * eps * eps;
         if (wantNext)
         {
@@ -196,7 +209,7 @@ ReturnMapPlasticity<D, Model>::returnMap(const Mat<D>& F, const State& committed
         const Eigen::Vector3d tau = kirchhoff(p.eps);
         const Mat<D> Finv = F.inverse();
         r.P = p.assemble(tau) * Finv.transpose();
-        r.maxAbsTau = tau.cwiseAbs().maxCoeff();
+        r.waveModulus = waveModulusAt(p.eps) + tau.cwiseAbs().maxCoeff();
         r.energy = elasticEnergy(p.eps);
         if (wantNext && r.flow.deltaGamma > 0.0)
         {
@@ -234,7 +247,7 @@ void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double*
             const Result r = returnMap(F[i], s, flow, flow);
             if (flow)
             {
-                memo_.store(a, F[i], s, {r.maxAbsTau, r.flow, r.next});
+                memo_.store(a, F[i], s, {r.waveModulus, r.flow, r.next});
             }
             P[i] = r.P;
             if (psi)
@@ -320,18 +333,17 @@ typename ReturnMemo<D>::Entry ReturnMapPlasticity<D, Model>::particleReturn(std:
     if (!memo_.find(a, F, s, e))
     {
         const Result r = returnMap(F, s, true);
-        e = {r.maxAbsTau, r.flow, r.next};
+        e = {r.waveModulus, r.flow, r.next};
     }
     return e;
 }
 
 template <int D, class Model>
-double ReturnMapPlasticity<D, Model>::waveSpeedOf(double maxAbsTau, const Mat<D>& stretched) const
+double ReturnMapPlasticity<D, Model>::waveSpeedOf(double waveModulus, const Mat<D>& stretched) const
 {
     // (P2.5): the elastic modulus bounds the elastoplastic one; the stretch sets the scale.
-    const double M = D == 1 ? elastic_.E : law_.longitudinalModulus();
     const double lowest = stretchSquaredRange<D>(stretched).first;
-    return std::sqrt((M + maxAbsTau) / lowest / this->density());
+    return std::sqrt(waveModulus / lowest / this->density());
 }
 
 template <int D, class Model>
@@ -343,8 +355,8 @@ double ReturnMapPlasticity<D, Model>::maxWaveSpeedSinceReference(const Mat<D>* F
     for (std::size_t i = 0; i < n; ++i)
     {
         const std::size_t a = first + i;
-        const double tau = particleReturn(a, F[i], state(a)).maxAbsTau;
-        c = std::max(c, waveSpeedOf(tau, Mat<D>(F[i] * Fr[i].inverse())));
+        const double modulus = particleReturn(a, F[i], state(a)).waveModulus;
+        c = std::max(c, waveSpeedOf(modulus, Mat<D>(F[i] * Fr[i].inverse())));
     }
     return c;
 }
@@ -357,7 +369,7 @@ double ReturnMapPlasticity<D, Model>::maxWaveSpeed(const Mat<D>* F, std::size_t 
     for (std::size_t i = 0; i < n; ++i)
     {
         const std::size_t a = first + i;
-        c = std::max(c, waveSpeedOf(particleReturn(a, F[i], state(a)).maxAbsTau, F[i]));
+        c = std::max(c, waveSpeedOf(particleReturn(a, F[i], state(a)).waveModulus, F[i]));
     }
     return c;
 }

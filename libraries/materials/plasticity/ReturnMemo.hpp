@@ -26,7 +26,7 @@ public:
     // What the wave-speed bound and the commit need of a return.
     struct Entry
     {
-        double maxAbsTau = 0.0;
+        double waveModulus = 0.0; // M + max |τ| of (P2.5)
         PlasticFlow flow;
         PlasticState<D> next;
     };
@@ -37,7 +37,7 @@ public:
           nextCp_(fields.template declare<Mat<D>>(spec("NextCp"), Mat<D>::Identity())),
           committedZZ_(fields.template declare<double>(scalar("CommittedZZ"), 1.0)),
           committedAlpha_(fields.template declare<double>(scalar("CommittedAlpha"), nan())),
-          maxAbsTau_(fields.template declare<double>(scalar("MaxAbsTau"), 0.0)),
+          waveModulus_(fields.template declare<double>(scalar("WaveModulus"), 0.0)),
           deltaGamma_(fields.template declare<double>(scalar("DeltaGamma"), 0.0)),
           nextAlpha_(fields.template declare<double>(scalar("NextAlpha"), 0.0)),
           nextZZ_(fields.template declare<double>(scalar("NextZZ"), 1.0)),
@@ -56,7 +56,7 @@ public:
         committedCp_[a] = committed.inversePlastic;
         committedZZ_[a] = committed.inversePlasticZZ;
         committedAlpha_[a] = committed.alpha;
-        maxAbsTau_[a] = e.maxAbsTau;
+        waveModulus_[a] = e.waveModulus;
         deltaGamma_[a] = e.flow.deltaGamma;
         nextAlpha_[a] = e.flow.alpha;
         dissipation_[a] = e.flow.dissipation;
@@ -74,7 +74,7 @@ public:
         {
             return false;
         }
-        e.maxAbsTau = maxAbsTau_[a];
+        e.waveModulus = waveModulus_[a];
         e.flow = {deltaGamma_[a], nextAlpha_[a], dissipation_[a]};
         e.next.inversePlastic = nextCp_[a];
         e.next.inversePlasticZZ = nextZZ_[a];
@@ -107,7 +107,7 @@ private:
     std::vector<Mat<D>>& nextCp_;
     std::vector<double>& committedZZ_;
     std::vector<double>& committedAlpha_;
-    std::vector<double>& maxAbsTau_;
+    std::vector<double>& waveModulus_;
     std::vector<double>& deltaGamma_;
     std::vector<double>& nextAlpha_;
     std::vector<double>& nextZZ_;

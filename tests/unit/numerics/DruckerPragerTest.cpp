@@ -144,6 +144,46 @@ TEST_CASE("druckerPrager: the apex return, and a cohesionless material in tensio
     }
 }
 
+// The wave-speed bound (docs/theory/plasticity.md (P2.7)): where the voids are open the pressure
+// does not change with εv, so the bound drops K, and at the apex of a cohesionless cone (every
+// admissible state stress-free) it drops μ too; a closed point keeps the elastic (P2.5). Through
+// maxWaveSpeed, the time step's call, from the committed state of an opened point.
+TEST_CASE("druckerPrager: the wave-speed bound of an open point (P2.7)", "[plasticity][druckerPrager]")
+{
+    const double rho = 2000.0;
+    const Mat<3> opened = Eigen::Vector3d(1e-3, 2e-3, -0.5e-3).array().exp().matrix().asDiagonal();
+    const Mat<3> squeezed = Eigen::Vector3d(-1e-3, -2e-3, -0.5e-3).array().exp().matrix().asDiagonal();
+    const double closedC = std::sqrt((K + 4 * mu / 3) / rho);
+    SECTION("c = 0: no stress and no stiffness while open; the elastic bound once closed")
+    {
+        test::MaterialPoint<3> point(dpText(30, 0, 0.0));
+        CHECK(point.material->maxWaveSpeed(&opened, 1, 0) < 1e-6 * closedC); // τ at round-off
+        point.commit(opened);
+        CHECK(point.material->maxWaveSpeed(&opened, 1, 0) < 1e-6 * closedC); // τ at round-off
+        // Pressed beyond the voids (εv = 2.5e-3 of them): the elastic M and the stress are back.
+        const Mat<3> closed = opened * std::exp(-4e-3 / 3.0);
+        const double c = point.material->maxWaveSpeed(&closed, 1, 0);
+        CHECK(c > closedC);
+        CHECK(c < 1.01 * closedC / std::exp(-4e-3 / 3.0 - 0.5e-3));
+    }
+    SECTION("c > 0: beyond the tension cut-off the shear modulus alone (and |τ| = σt)")
+    {
+        test::MaterialPoint<3> point(dpText(30, 0, cohesion, "tensileStrength 1000;"));
+        const Mat<3> far = Eigen::Vector3d(1e-2, 1e-2, 1e-2).array().exp().matrix().asDiagonal();
+        const double c = point.material->maxWaveSpeed(&far, 1, 0);
+        const double lambda = std::exp(1e-2);
+        CHECK(c == Approx(std::sqrt((4 * mu / 3 + 1000.0) / rho) / lambda).epsilon(1e-9));
+    }
+    SECTION("a closed, compressed point: (P2.5) unchanged")
+    {
+        test::MaterialPoint<3> point(dpText(30, 0, 0.0));
+        const double c = point.material->maxWaveSpeed(&squeezed, 1, 0);
+        const Mat<3> tau = point.kirchhoff(squeezed);
+        CHECK(c == Approx(std::sqrt((K + 4 * mu / 3 + tau.cwiseAbs().maxCoeff()) / rho) / std::exp(-2e-3))
+                       .epsilon(1e-12));
+    }
+}
+
 // ψ = 0: the cone's flow is deviatoric, εv unchanged, det Cp⁻¹ = exp(−2 tr εp) stays 1;
 // ψ = φ: Δεp = εtr − ε is parallel to ∂Φ/∂τ = s/(2√J2) + η/3 1 at the returned τ. Both on the
 // smooth cone (compressed, sheared states; the cut-off's flow is volumetric by design).
