@@ -104,6 +104,15 @@ void everyScheme()
     test::loadModelLibraries();
     for (const std::string& name : Registry<Stabilisation<D>>::names())
     {
+        if (name == "oneSided")
+        {
+            // oneSided refuses materials with history (one per side would be needed):
+            // an input error at setup (tests/errors/oneSidedPlasticMaterial).
+            CHECK_THROWS_AS(test::SchemeFixture<D>(test::schemeCloud<D>(7), test::schemeText<D>(name),
+                                                   kElasticJ2, false, test::schemeHOverDx<D>()),
+                            InputError);
+            continue;
+        }
         for (const bool updated : {false, true})
         {
             noYieldingIsHencky<D>(name, updated);

@@ -33,7 +33,7 @@ Names ownModels(const std::string& family, int dimension)
 // family -> dimension -> names (dimension 0: dimension-independent family)
 const std::map<std::string, std::map<int, Names>>& expected()
 {
-    static const Names everyScheme{"gradF", "hourglass", "none", "vidal"};
+    static const Names everyScheme{"gradF", "hourglass", "none", "oneSided", "vidal"};
     static const std::map<std::string, std::map<int, Names>> table{
         {"kernel", {{0, {"cubicSpline", "quinticSpline", "wendlandC2"}}}},
         {"material",
