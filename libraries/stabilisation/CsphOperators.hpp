@@ -43,6 +43,28 @@ struct StandardGradients
     const CorrectedGradient<D>& gradient() const { return ref.gradient; }
 };
 
+// Pair gradients stored per pair slot k = (a, b) with their corrected gradient: the `vidal`
+// scheme's shifted kernel gradients, the `oneSided` scheme's one-sided ones.
+template <int D>
+struct StoredGradients
+{
+    const std::vector<Vec<D>>& out; // d_ab, the gradient a's operator uses for b
+    const std::vector<Vec<D>>& in;  // d_ba, the gradient b's operator uses for a
+    const CorrectedGradient<D>& corrected;
+
+    struct Particle
+    {
+        const std::vector<Vec<D>>& out;
+        const std::vector<Vec<D>>& in;
+        const Vec<D>& outgoing(std::size_t k) const { return out[k]; }
+        const Vec<D>& incoming(std::size_t k) const { return in[k]; }
+    };
+    Particle particle(std::size_t) const { return {out, in}; }
+    const Mat<D>& L(std::size_t a) const { return corrected.L[a]; }
+    const Vec<D>& e(std::size_t a) const { return corrected.e[a]; }
+    const CorrectedGradient<D>& gradient() const { return corrected; }
+};
+
 // f_a at positions x.
 template <int D, class GradientSet>
 Mat<D> incrementalGradient(std::size_t a, const std::vector<Vec<D>>& x,

@@ -259,7 +259,7 @@ ForceStatus OneSided<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& 
     ChunkTally tally;
     for (int j = 0; j < sides; ++j)
     {
-        const SidedGradients<D> g = gradients(j);
+        const StoredGradients<D> g = gradients(j);
         F_[j].resize(n);
         P_[j].resize(n);
         UL_[j].resize(n);

@@ -29,27 +29,6 @@
 namespace sph
 {
 
-// Side j's pair gradients, stored per pair slot k = (a, b).
-template <int D>
-struct SidedGradients
-{
-    const std::vector<Vec<D>>& out; // d^j_ab
-    const std::vector<Vec<D>>& in;  // d^j_ba: the gradient b's side-j operator uses for a
-    const CorrectedGradient<D>& corrected;
-
-    struct Particle
-    {
-        const std::vector<Vec<D>>& out;
-        const std::vector<Vec<D>>& in;
-        const Vec<D>& outgoing(std::size_t k) const { return out[k]; }
-        const Vec<D>& incoming(std::size_t k) const { return in[k]; }
-    };
-    Particle particle(std::size_t) const { return {out, in}; }
-    const Mat<D>& L(std::size_t a) const { return corrected.L[a]; }
-    const Vec<D>& e(std::size_t a) const { return corrected.e[a]; }
-    const CorrectedGradient<D>& gradient() const { return corrected; }
-};
-
 template <int D>
 class OneSided : public Stabilisation<D>
 {
@@ -85,7 +64,7 @@ public:
                                    const ReferenceConfiguration<D>& ref) const;
 
 private:
-    SidedGradients<D> gradients(int j) const { return {out_[j], in_[j], corrected_[j]}; }
+    StoredGradients<D> gradients(int j) const { return {out_[j], in_[j], corrected_[j]}; }
     const Mat<D>& carried(int j, std::size_t a) const;
 
     const Kernel& kernel_;

@@ -22,27 +22,6 @@
 namespace sph
 {
 
-// The shifted gradients, stored per pair.
-template <int D>
-struct ShiftedGradients
-{
-    const std::vector<Vec<D>>& out; // ∇W(p_a - x^r_b) for slot k = (a, b)
-    const std::vector<Vec<D>>& in;  // ∇W(p_b - x^r_a) for slot k = (a, b)
-    const CorrectedGradient<D>& corrected;
-
-    struct Particle
-    {
-        const std::vector<Vec<D>>& out;
-        const std::vector<Vec<D>>& in;
-        const Vec<D>& outgoing(std::size_t k) const { return out[k]; }
-        const Vec<D>& incoming(std::size_t k) const { return in[k]; }
-    };
-    Particle particle(std::size_t) const { return {out, in}; }
-    const Mat<D>& L(std::size_t a) const { return corrected.L[a]; }
-    const Vec<D>& e(std::size_t a) const { return corrected.e[a]; }
-    const CorrectedGradient<D>& gradient() const { return corrected; }
-};
-
 template <int D>
 class Vidal : public Stabilisation<D>
 {
@@ -76,7 +55,8 @@ public:
     const Vec<D>& beta() const { return beta_; }
 
 private:
-    ShiftedGradients<D> gradients() const { return {out_, in_, corrected_}; }
+    // The shifted gradients of every pair.
+    StoredGradients<D> gradients() const { return {out_, in_, corrected_}; }
 
     const Kernel& kernel_;
     Vec<D> beta_;
