@@ -21,7 +21,8 @@ std::string OneSided<D>::description()
            "side, ...), force its exact derivative; no parameter. Sees the 2D sawtooths and the "
            "checkerboard that no shift of the gradient (vidal) can (docs/theory/vidal-modes.md "
            "§V7). Elastic materials only; costs 2D material evaluations per particle. Rings map "
-           "(tutorials/rings2D/vidalStabilityMap): stable in 12 of 12 runs (vidal 4 of 84).";
+           "(tutorials/rings2D/vidalStabilityMap): stable in 12 of 12 runs (vidal 4 of 84); fails the "
+           "zeroEnergyMode and tensileInstability hard cases (docs/results.md §1.1).";
 }
 
 template <int D>
