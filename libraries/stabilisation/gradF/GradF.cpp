@@ -263,7 +263,7 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
             break;
         }
     }
-    return status;
+    return status.ok() ? sampleInversion_ : status;
 }
 
 template <int D>

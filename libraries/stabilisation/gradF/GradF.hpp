@@ -154,6 +154,10 @@ private:
     // it sets to the dilation J^(1/D) I (§G4), marked by moveHistory() for the
     // referenceUpdate() that follows it.
     std::vector<std::uint8_t> spatialFrame_;
+    // elasticState: an inverted stress sample found by moveHistory() (det f_b(a) <= 0: its
+    // rebased state would be the mirror image's, which the materials cannot tell apart, §G3),
+    // reported by the referenceUpdate() that follows it.
+    ForceStatus sampleInversion_;
     SampleHistory<D> samples_;
     std::vector<double> sampleDissipation_;
     // Where the samples around particle a find their history (a's slots of the list).

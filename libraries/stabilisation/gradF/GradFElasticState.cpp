@@ -33,6 +33,10 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
     }
     spatialFrame_.assign(n, 0);
     weightsDue_ = samples_.weighted(); // the evaluation after the move chooses them (§G9)
+    // The smallest det F_b(a) / det F_a^r of each particle's samples (§G3: > 0 unless the step
+    // was unstable). be = F Cp⁻¹ Fᵀ is positive definite for det F < 0 too, so an inverted
+    // sample would carry on as its mirror image: the move refuses it instead.
+    std::vector<double> smallest(n, 1.0);
 #pragma omp parallel if (useThreads(n))
     {
         Scratch scratch;
@@ -52,9 +56,26 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
             for (std::size_t j = 0; j < list.count(a); ++j)
             {
                 const Mat<D> Fb = kin.F + kin.G.contract(scratch.xr[j]);
+                const double ratio = Fb.determinant() / ref.F[a].determinant();
+                if (!(ratio > 0.0) && !(ratio >= smallest[a]))
+                {
+                    smallest[a] = ratio;
+                }
                 material.rebaseHistory(samples_.committedForMove(first + j), Fb, frame);
             }
             material.rebaseParticleHistory(a, kin.F, frame);
+        }
+    }
+    sampleInversion_ = ForceStatus();
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        if (ref.counts(a) && !(smallest[a] > 0.0))
+        {
+            sampleInversion_ = ForceStatus::failed(
+                FailureKind::nonPositiveJacobian, static_cast<long>(a), smallest[a],
+                "det f_b(a) of a stress sample (gradF elasticState, the step's motion across "
+                "the kernel)");
+            break;
         }
     }
 }
