@@ -26,7 +26,7 @@ set xlabel "time [ms]"
 set yrange [*:*]
 set key top left
 amplitude = 9.3734e-4
-plot for [v in "TLnone TLgradF ULgradF ULgradFN10 ULhourglassN10 ULnone ULnoneN10 ULvidal ULvidalBeta03"] tip(v, 40, "50ms") \
+plot for [v in "TLnone TLgradF ULgradF ULgradFN10 ULhourglassN10 ULnone ULnoneN10 ULvidal ULvidalDefault"] tip(v, 40, "50ms") \
         using ($1*1e3):($7/amplitude) every 50 with lines lw 2 title v." (40)", \
      tip("ULnone", 160, "50ms") using ($1*1e3):($7/amplitude) every 200 with lines lw 2 dt 2 title "ULnone (160)", \
      tip("ULgradF", 160, "50ms") using ($1*1e3):($7/amplitude) every 200 with lines lw 2 dt 2 title "ULgradF (160)"
