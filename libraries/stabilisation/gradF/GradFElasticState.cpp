@@ -33,10 +33,10 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
     }
     spatialFrame_.assign(n, 0);
     weightsDue_ = samples_.weighted(); // the evaluation after the move chooses them (§G9)
-    // The smallest det F_b(a) / det F_a^r of each particle's samples (§G3: > 0 unless the step
-    // was unstable). be = F Cp⁻¹ Fᵀ is positive definite for det F < 0 too, so an inverted
-    // sample would carry on as its mirror image: the move refuses it instead.
-    std::vector<double> smallest(n, 1.0);
+    // det f_b(a) = det F_b(a) / det F_a^r of each particle's first inverted sample, 1 if none
+    // (§G3: none unless the step was unstable). be = F Cp⁻¹ Fᵀ is positive definite for det F < 0
+    // too, so an inverted sample would carry on as its mirror image: the move refuses it instead.
+    std::vector<double> inverted(n, 1.0);
 #pragma omp parallel if (useThreads(n))
     {
         Scratch scratch;
@@ -53,13 +53,14 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
             const Kinematics kin = kinematics(a, x, ref, false, scratch);
             const Mat<D> frame = std::pow(kin.F.determinant(), 1.0 / D) * Mat<D>::Identity();
             const std::size_t first = list.begin(a);
+            const double Jr = ref.F[a].determinant();
             for (std::size_t j = 0; j < list.count(a); ++j)
             {
                 const Mat<D> Fb = kin.F + kin.G.contract(scratch.xr[j]);
-                const double ratio = Fb.determinant() / ref.F[a].determinant();
-                if (!(ratio > 0.0) && !(ratio >= smallest[a]))
+                const double ratio = Fb.determinant() / Jr;
+                if (!(ratio > 0.0) && inverted[a] > 0.0)
                 {
-                    smallest[a] = ratio;
+                    inverted[a] = ratio;
                 }
                 material.rebaseHistory(samples_.committedForMove(first + j), Fb, frame);
             }
@@ -69,10 +70,10 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
     sampleInversion_ = ForceStatus();
     for (std::size_t a = 0; a < n; ++a)
     {
-        if (ref.counts(a) && !(smallest[a] > 0.0))
+        if (ref.counts(a) && !(inverted[a] > 0.0))
         {
             sampleInversion_ = ForceStatus::failed(
-                FailureKind::nonPositiveJacobian, static_cast<long>(a), smallest[a],
+                FailureKind::nonPositiveJacobian, static_cast<long>(a), inverted[a],
                 "det f_b(a) of a stress sample (gradF elasticState, the step's motion across "
                 "the kernel)");
             break;
