@@ -139,7 +139,7 @@ bool RunLog::progressDue() const
 }
 
 void RunLog::progress(long step, long stepsDone, double time, double deltaT, double drift,
-                      bool haveDrift)
+                      bool haveDrift, const std::string& note)
 {
     lastProgress_ = Clock::now();
     const double elapsed = elapsedSeconds();
@@ -161,7 +161,7 @@ void RunLog::progress(long step, long stepsDone, double time, double deltaT, dou
     {
         std::snprintf(tail, sizeof tail, "dt = %.3e s  %.3e particle-steps/s", deltaT, rate);
     }
-    std::string text = std::string(head) + tail;
+    std::string text = std::string(head) + tail + (note.empty() ? "" : "  " + note);
     if (!inPlace_)
     {
         line(text);

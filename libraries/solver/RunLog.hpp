@@ -76,8 +76,9 @@ public:
     void startTimer(double startTime, double endTime, std::size_t particles);
     // Whether a progress line is due (checked before the step's force evaluation).
     bool progressDue() const;
+    // `note`: the time integrator's word on its step (e.g. the measured omega dt), appended.
     void progress(long step, long stepsDone, double time, double deltaT, double drift,
-                  bool haveDrift);
+                  bool haveDrift, const std::string& note = "");
     RunSummary finish(long steps, double time);
     // Time spent writing output, excluded from the compute rate.
     void addOutputSeconds(double seconds) { outputSeconds_ += seconds; }

@@ -43,6 +43,7 @@
 #include "timeIntegration/TimeIntegration.hpp"
 #include "walls/WallSet.hpp"
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -85,6 +86,7 @@ private:
     void setupWalls();
     void setupViscosity(const SchemeSettings& schemes);
     void setupImpenetrability(const SchemeSettings& schemes);
+    void setupOperatorProbe();   // stepBound operator: the probe, or why not (timeStep.md §T4)
     void setupFunctionObjects();
     void checkCrossingOrder();
     // SimulationBodies.cpp
@@ -110,6 +112,9 @@ private:
     };
     Step stepToTake() const;
     bool outputDueNow() const; // the VTK output is due at this level
+    // The operator's largest frequency at this level (docs/theory/timeStep.md §T3); leaves the
+    // level's own forces, F, P and scratch states as they were.
+    typename OperatorProbe<D>::Result probeOperator(int iterations, std::vector<Vec<D>>& mode);
     bool moveReference(long firstStep);           // x^n -> the reference configuration
     bool energyWanted(long firstStep) const;      // the function objects' needs -> bool
     double strainEnergyNow();                     // x^n, the reference as it is -> Π
@@ -216,6 +221,11 @@ private:
     // before the move of this step, while its change is still to be booked.
     bool moveEnergyWanted_ = false;
     std::optional<double> energyBeforeMove_;
+    // How the level's own forces were evaluated (the probe evaluates them again so).
+    bool levelAtReference_ = false;
+    bool levelWantsEnergy_ = false;
+    // The longest step the walls allow when the step follows the operator (timeStep.md §T4).
+    double wallDeltaT_ = std::numeric_limits<double>::infinity();
     std::unique_ptr<Formulation<D>> formulation_;
     std::unique_ptr<Stabilisation<D>> scheme_;
     std::unique_ptr<Contact<D>> contact_;

@@ -80,7 +80,7 @@ WaveSpeedBound Simulation<D>::waveSpeedBound() const
                 // takes the serial run's step.
                 return comm_.maximum(viscosity_->signalSpeed(fastestBody().first));
             },
-            fastestParticle};
+            fastestParticle, wallDeltaT_};
 }
 
 // A run that would take more than 1e12 steps, or write more than once per step, is an input

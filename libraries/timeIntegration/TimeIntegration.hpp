@@ -10,10 +10,14 @@
 
 #include "core/Registry.hpp"
 #include "core/RunScalars.hpp"
+#include "core/SourceLocation.hpp"
 #include "particles/ParticleFields.hpp"
 #include "stabilisation/Stabilisation.hpp"
+#include "timeIntegration/OperatorProbe.hpp"
 
 #include <functional>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,7 +32,27 @@ struct WaveSpeedBound
     double h = 0.0;
     std::function<double()> maxWaveSpeed;
     std::function<std::size_t()> fastestParticle;
+    // The longest step the rigid walls allow when the step does not follow the wave speed
+    // (docs/theory/timeStep.md §T4): courant h / c0; infinite without walls.
+    double wallDeltaT = std::numeric_limits<double>::infinity();
 };
+
+// What an integrator that measures the operator's largest frequency asks of the solver
+// (docs/theory/timeStep.md §T3): a probe every `interval` steps of `iterations` products, and
+// where it asked for it (for the solver's refusals: a viscosity, contact, several ranks).
+struct OperatorProbeRequest
+{
+    long interval = 10;
+    int iterations = 2;
+    SourceLocation where;
+    bool controlsStep = true; // the step follows it (else it is only reported)
+};
+
+// The solver's probe: `iterations` power iterations from the kept mode (OperatorProbe<D>::run at
+// the level's positions and forces).
+template <int D>
+using OperatorFrequency =
+    std::function<typename OperatorProbe<D>::Result(int iterations, std::vector<Vec<D>>& mode)>;
 
 template <int D>
 class TimeIntegration : public RegisteredModel
@@ -55,6 +79,12 @@ public:
     virtual ForceStatus chooseTimeStep(long step, bool freshStart, const WaveSpeedBound& bound) = 0;
     // Δt_n, the step from the current level.
     virtual double deltaT() const = 0;
+    // Whether the step follows the operator's measured largest frequency (then the solver hands
+    // over its probe once, before the first step, and chooseTimeStep() calls it at the probes).
+    virtual std::optional<OperatorProbeRequest> operatorProbe() const { return std::nullopt; }
+    virtual void setOperatorFrequency(OperatorFrequency<D> probe) { (void)probe; }
+    // A few words on the current step for the run log's progress line ("" for none).
+    virtual std::string stepNote() const { return ""; }
     // The velocity at the time level, v^n, from the stored velocity and a^n.
     virtual void synchronise(const std::vector<Vec<D>>& acceleration,
                              std::vector<Vec<D>>& velocityAtLevel) const = 0;

@@ -5,10 +5,24 @@
 //   Δt_n = α h / max_a c(F_a).
 //
 // Symplectic for a constant step, second order, explicit: one force evaluation per step.
+//
+// The step's bound (docs/theory/timeStep.md):
+//   stepBound waveSpeed: Δt_n = courant h / max_a c(F_a) (seed eq. 17, plasticity.md (P2.5)-(P2.7)),
+//                        recomputed every timeStepUpdateInterval steps;
+//   stepBound operator:  Δt_0 as above, κ = ω̃_0 Δt_0, then Δt_n = κ / ω̃_n at every probe,
+//                        capped at courant h / c0 with walls (§T4); ω̃ the operator's largest
+//                        frequency measured by the solver's probe (§T3).
+//
+// Keys:
+//   stepBound       | waveSpeed or operator                                  | waveSpeed
+//   probeInterval   | steps between probes, >= 1; with waveSpeed, given: the | 10 (operator),
+//                   | probe only reports ω̃ Δt (progress line)               | none (waveSpeed)
+//   probeIterations | power iterations per probe, >= 1                      | 2
 #include "particles/Parallel.hpp"
 #include "timeIntegration/TimeIntegration.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 namespace sph
 {
@@ -22,11 +36,58 @@ public:
         return "Leapfrog (kick-drift with half-step velocities, seed eqs. 15-16): second "
                "order, one force evaluation per step, Δt = courant h / max c.";
     }
-    static Schema schema() { return Schema(); }
+    static Schema schema()
+    {
+        return Schema()
+            .add(Key::word("stepBound", "what bounds the step: waveSpeed (courant h / c) or "
+                                        "operator (the measured largest frequency of the "
+                                        "forces, docs/theory/timeStep.md)")
+                     .choices({"waveSpeed", "operator"})
+                     .defaultValue("waveSpeed"))
+            .add(Key::integer("probeInterval", "steps between measurements of the largest "
+                                               "frequency; with waveSpeed they are only "
+                                               "reported (omega dt on the progress line); "
+                                               "default 10 with operator")
+                     .min(1)
+                     .optional())
+            .add(Key::integer("probeIterations", "power iterations per measurement (stepBound "
+                                                 "operator); the first level makes 50")
+                     .min(1)
+                     .defaultValue("2"));
+    }
 
-    Leapfrog(const Params&, const typename TimeIntegration<D>::Args& args)
+    Leapfrog(const Params& params, const typename TimeIntegration<D>::Args& args)
         : courant_(args.courant), interval_(args.timeStepUpdateInterval)
     {
+        controlsStep_ = params.word("stepBound") == "operator";
+        if (controlsStep_ || params.has("probeInterval"))
+        {
+            probe_ = OperatorProbeRequest{
+                params.has("probeInterval") ? params.integer("probeInterval") : 10,
+                static_cast<int>(params.integer("probeIterations")),
+                params.location(controlsStep_ ? "stepBound" : "probeInterval"), controlsStep_};
+        }
+        else if (params.given("probeIterations"))
+        {
+            params.fail("probeIterations", "probeIterations applies only where a probe runs",
+                        {"Add 'stepBound operator;' (the step follows the probe) or "
+                         "'probeInterval N;' (the probe only reports), or remove "
+                         "probeIterations."});
+        }
+        if (controlsStep_ && interval_ != 1)
+        {
+            params.fail("stepBound", "stepBound operator changes the step at its probes "
+                                     "(every probeInterval steps); timeStepUpdateInterval "
+                                     "(controlDict) is " + std::to_string(interval_),
+                        {"Remove timeStepUpdateInterval from controlDict, or use stepBound "
+                         "waveSpeed."});
+        }
+    }
+
+    std::optional<OperatorProbeRequest> operatorProbe() const override { return probe_; }
+    void setOperatorFrequency(OperatorFrequency<D> frequency) override
+    {
+        frequency_ = std::move(frequency);
     }
 
     std::string velocityField() const override { return "velocityHalfStep"; }
@@ -43,10 +104,28 @@ public:
         scalars.bind("previousDeltaT", previousDeltaT_);
         scalars.bind("firstDeltaT", firstDeltaT_);
         scalars.bind("halfStepVelocity", halfStep_);
+        if (probe_)
+        {
+            fields.bind(FieldSpec::vector("operatorMode", "the mode of the largest frequency "
+                                                          "of the forces, as the last probe "
+                                                          "left it (stepBound operator)")
+                            .restart(),
+                        mode_);
+            scalars.bind("operatorMargin", margin_);
+            scalars.bind("operatorFrequency", omega_);
+        }
     }
 
     ForceStatus chooseTimeStep(long step, bool freshStart, const WaveSpeedBound& bound) override
     {
+        if (controlsStep_)
+        {
+            return chooseFromOperator(step, freshStart, bound);
+        }
+        if (probe_ && (freshStart || step % probe_->interval == 0))
+        {
+            measure(freshStart);
+        }
         if (!freshStart && !(interval_ > 0 && step % interval_ == 0))
         {
             return {};
@@ -69,6 +148,17 @@ public:
     }
 
     double deltaT() const override { return deltaT_; }
+
+    std::string stepNote() const override
+    {
+        if (!probe_)
+        {
+            return "";
+        }
+        char note[64];
+        std::snprintf(note, sizeof note, "omega dt = %.3f", omega_ * deltaT_);
+        return note;
+    }
 
     void synchronise(const std::vector<Vec<D>>& a, std::vector<Vec<D>>& vn) const override
     {
@@ -104,8 +194,65 @@ public:
     }
 
 private:
+    // (T4.1): the first level takes the wave-speed step and measures the margin κ = ω̃_0 Δt_0
+    // that it leaves; every probe after it sets Δt = κ / ω̃.
+    ForceStatus chooseFromOperator(long step, bool freshStart, const WaveSpeedBound& bound)
+    {
+        if (!freshStart && step % probe_->interval != 0)
+        {
+            return {};
+        }
+        const typename OperatorProbe<D>::Result measured = measure(freshStart);
+        double stable = 0.0;
+        if (freshStart)
+        {
+            stable = courant_ * bound.h / bound.maxWaveSpeed();
+            firstDeltaT_ = stable;
+            margin_ = omega_ * stable;
+        }
+        else if (margin_ > 0.0 && omega_ > 0.0)
+        {
+            stable = std::min(margin_ / omega_, bound.wallDeltaT);
+        }
+        else
+        {
+            // Nothing that vibrates was found (every particle fixed, or no neighbours): the
+            // wave-speed step.
+            stable = courant_ * bound.h / bound.maxWaveSpeed();
+        }
+        if (!(stable > 1e-6 * firstDeltaT_) || !std::isfinite(stable))
+        {
+            return ForceStatus::failed(FailureKind::timeStepCollapse,
+                                       static_cast<long>(measured.where), stable,
+                                       "time step (collapsed to " + std::to_string(stable) +
+                                           " s from " + std::to_string(firstDeltaT_) +
+                                           " s; the largest frequency of the forces, " +
+                                           std::to_string(omega_) + " 1/s, has its mode here)");
+        }
+        deltaT_ = stable;
+        return {};
+    }
+
+    // ω̃ from the solver's probe (§T3): from a random start at the first level the power
+    // iteration needs many products, later the kept mode a few.
+    typename OperatorProbe<D>::Result measure(bool freshStart)
+    {
+        const typename OperatorProbe<D>::Result measured =
+            frequency_(freshStart ? firstIterations : probe_->iterations, mode_);
+        omega_ = measured.omega;
+        return measured;
+    }
+
+    static constexpr int firstIterations = 50;
+
     double courant_;
     long interval_;
+    std::optional<OperatorProbeRequest> probe_; // a probe runs (stepBound operator, or probeInterval)
+    bool controlsStep_ = false;                 // stepBound operator: the step follows it
+    OperatorFrequency<D> frequency_;
+    std::vector<Vec<D>> mode_;    // y of §T3 (restart data)
+    double margin_ = 0.0;         // κ = ω̃_0 Δt_0
+    double omega_ = 0.0;          // ω̃ of the last probe
     std::vector<Vec<D>>* v_ = nullptr;
     double deltaT_ = 0.0;         // Δt_n
     double previousDeltaT_ = 0.0; // Δt_{n-1}

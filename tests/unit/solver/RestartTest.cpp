@@ -206,6 +206,16 @@ TEST_CASE("restart continues bit-identically: 2D plastic impact, gradF elasticSt
                           "stabilisation.moveWeights=conserving"});
 }
 
+// The step measured from the operator (docs/theory/timeStep.md): its kept mode (a particle
+// field), margin and last frequency are restart data; the stop at step 60 falls between two
+// probes (every 7 steps), so the restart keeps the step of the probe at 56.
+TEST_CASE("restart continues bit-identically: 2D plastic impact, stepBound operator",
+          "[restart][plasticity][operatorProbe]")
+{
+    plasticImpactRestart({"-set", "stabilisation.plasticSamples=elasticState", "-set",
+                          "sphSchemes.timeIntegration={ stepBound operator; probeInterval 7; }"});
+}
+
 // A .pvd that is a link to itself (a loop) gave "FATAL ERROR (internal) filesystem error";
 // a restart now names the file and the reason (issue 31).
 TEST_CASE("restart: a time series that links to itself is an input error", "[restart][errors]")

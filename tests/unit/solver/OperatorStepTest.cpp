@@ -1,0 +1,121 @@
+// The time step from the operator's measured largest frequency (docs/theory/timeStep.md): the
+// measured frequency is the leapfrog's stability limit (T1.1) to a per cent; a probe that only
+// reports leaves a run as it was, bit for bit (§T3: each evaluation is a function of the
+// positions and the committed state); `stepBound operator` starts with the wave-speed step and
+// keeps the plastic impact stable at a Courant number where the wave-speed step lets it fail
+// (§T2, §T4).
+#include "core/Application.hpp"
+#include "io/PvdSeries.hpp"
+#include "io/VtuFile.hpp"
+#include "solver/SolverCases.hpp"
+
+using namespace sph;
+
+namespace
+{
+
+VtuData lastOutput(const std::filesystem::path& caseDir)
+{
+    PvdSeries series(caseDir / "VTK" / (caseDir.filename().string() + ".pvd"));
+    series.load();
+    REQUIRE(!series.entries().empty());
+    return readVtu(caseDir / "VTK" / series.entries().back().file);
+}
+
+// The plasticity2D/impact tutorial (1296 particles) in UL gradF elasticState, with `more`.
+int runImpact(const std::filesystem::path& folder, const std::vector<std::string>& more)
+{
+    const auto caseDir = test::copyTutorial("plasticity2D/impact", folder);
+    REQUIRE(test::runParticles(caseDir) == 0);
+    std::vector<std::string> arguments{"-set", "formulation.type=updatedLagrangian", "-set",
+                                       "stabilisation.type=gradF", "-set",
+                                       "stabilisation.plasticSamples=elasticState"};
+    arguments.insert(arguments.end(), more.begin(), more.end());
+    return test::runSolver(caseDir, arguments);
+}
+
+} // namespace
+
+// The Dyka bar (1D, TL none, 40 particles) at a fixed step: ω̃ measured at the first level; a
+// step with ω̃ Δt = 1.95 runs 500 steps, one with 2.05 blows up within a few dozen (T1.1). So the
+// probe measures the limit itself, and the Courant numbers that give it are no guess.
+TEST_CASE("the probed frequency is the leapfrog's stability limit", "[operatorProbe]")
+{
+    test::TempDir dir;
+    const auto caseDir = test::copyTutorial("bar1D/dykaBar", dir.path());
+    REQUIRE(test::runParticles(caseDir) == 0);
+    const double courant = 0.01;
+    REQUIRE(test::runSolver(caseDir, {"-set", "courant=0.01", "-set", "controlDict.maxSteps=1",
+                                      "-set", "sphSchemes.timeIntegration={ probeInterval 1; }"}) == 0);
+    const VtuData first = lastOutput(caseDir);
+    const double omega = first.fieldData.at("restart:operatorFrequency").values.at(0);
+    // ω̃ Δt per unit Courant number (Δt = courant h / c at F = I).
+    const double perCourant = omega * first.fieldData.at("restart:firstDeltaT").values.at(0) / courant;
+    const auto runAt = [&](double omegaDeltaT) {
+        return test::runSolver(
+            caseDir, {"-set", "courant=" + std::to_string(omegaDeltaT / perCourant), "-set",
+                      "controlDict.timeStepUpdateInterval=0", "-set", "endTime=2e-2", "-set",
+                      "writeInterval=1", "-set", "controlDict.functions.tipError.writeInterval=1",
+                      "-set", "controlDict.functions.stability.writeInterval=1"});
+    };
+    CHECK(runAt(1.95) == 0);
+    CHECK_THROWS_AS(runAt(2.05), NumericalFailure);
+}
+
+TEST_CASE("a probe that only reports leaves the run as it was, bit for bit", "[operatorProbe]")
+{
+    test::TempDir plain;
+    test::TempDir probed;
+    REQUIRE(runImpact(plain.path(), {"-set", "endTime=4e-6"}) == 0);
+    REQUIRE(runImpact(probed.path(), {"-set", "endTime=4e-6", "-set",
+                                      "sphSchemes.timeIntegration={ probeInterval 5; }"}) == 0);
+    const VtuData a = lastOutput(plain.path() / "impact");
+    const VtuData b = lastOutput(probed.path() / "impact");
+    // Every array of the plain run is in the probed one, bit for bit; the probed run adds the
+    // probe's own state only.
+    REQUIRE(a.points.size() == b.points.size());
+    CHECK(a.points == b.points);
+    for (const auto& [name, array] : a.pointData)
+    {
+        INFO(name);
+        REQUIRE(b.pointData.count(name));
+        CHECK(array.values == b.pointData.at(name).values);
+    }
+    for (const auto& [name, array] : a.fieldData)
+    {
+        INFO(name);
+        REQUIRE(b.fieldData.count(name));
+        CHECK(array.values == b.fieldData.at(name).values);
+    }
+    CHECK(b.pointData.size() == a.pointData.size() + 1); // operatorMode
+    CHECK(b.fieldData.at("restart:operatorFrequency").values.at(0) > 0.0);
+    const auto& alpha = a.pointData.at("plasticStrain").values;
+    CHECK(*std::max_element(alpha.begin(), alpha.end()) > 0.01); // it flowed
+}
+
+// At courant 0.5 the impact face's neighbourhoods stiffen the operator past the leapfrog's limit
+// at about 16 µs with the wave-speed step (det f ≤ 0 of a stress sample); the measured step
+// keeps the first level's ω Δt and completes. Both start with the same step.
+TEST_CASE("stepBound operator keeps the plastic impact stable where the wave-speed step fails",
+          "[operatorProbe]")
+{
+    test::TempDir waveSpeed;
+    test::TempDir measured;
+    const std::vector<std::string> common{"-set", "endTime=2e-5", "-set", "courant=0.5"};
+    CHECK_THROWS_AS(runImpact(waveSpeed.path(), common), NumericalFailure);
+    auto withOperator = common;
+    withOperator.insert(withOperator.end(),
+                        {"-set", "sphSchemes.timeIntegration={ stepBound operator; }"});
+    REQUIRE(runImpact(measured.path(), withOperator) == 0);
+    const VtuData first = readVtu(waveSpeed.path() / "impact" / "VTK" / "impact_0.vtu");
+    const VtuData last = lastOutput(measured.path() / "impact");
+    CHECK(last.fieldData.at("restart:firstDeltaT").values.at(0) ==
+          first.fieldData.at("restart:deltaT").values.at(0));
+    // κ = ω̃_0 Δt_0 of the first level: about 0.69 × 0.5/0.3 for this kernel (§T2).
+    const double margin = last.fieldData.at("restart:operatorMargin").values.at(0);
+    CHECK(margin > 0.9);
+    CHECK(margin < 1.4);
+    // The face stiffened: the step at the end is shorter than the first.
+    CHECK(last.fieldData.at("restart:deltaT").values.at(0) <
+          0.9 * last.fieldData.at("restart:firstDeltaT").values.at(0));
+}
