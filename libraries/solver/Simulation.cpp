@@ -366,7 +366,8 @@ typename OperatorProbe<D>::Result Simulation<D>::probeOperator(int iterations,
         forces = acceleration_;
     };
     const typename OperatorProbe<D>::Result result = OperatorProbe<D>::run(
-        {x, T, particles_.m, particles_.fixed, kernel_->h(), step_}, forcesAt, iterations, mode);
+        {x, T, particles_.m, particles_.fixed, kernel_->h(), step_, ranks_}, forcesAt, iterations,
+        mode);
     particles_.x = x;
     computeForces(levelAtReference_, levelWantsEnergy_);
     return result;

@@ -111,14 +111,6 @@ void Simulation<D>::setupOperatorProbe()
     {
         return;
     }
-    if (comm_.parallel())
-    {
-        throw InputError(request->where,
-                         "the probe of the largest frequency does not run on several ranks yet "
-                         "(its sums over the ranks and the perturbed ghosts are not built)",
-                         {"Run it on one rank (threads: -threads N), or remove the probe "
-                          "(docs/theory/timeStep.md §T4)."});
-    }
     const auto refuse = [&request](const std::string& what, const std::string& hint) {
         throw InputError(request->where,
                          "stepBound operator measures the internal forces only; " + what,

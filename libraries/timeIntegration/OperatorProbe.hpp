@@ -7,11 +7,14 @@
 //   ω̃² = |A y| / |y| of the last product                                         (T3.1, T3.2)
 //
 // The mode y is kept between probes (warm start) and is the caller's restart data; each probe
-// first adds a pseudo-random vector of norm 0.1 drawn from a generator seeded by the step, so
-// that a mode newly the stiffest has a component to grow from and a restart draws the same.
-// Fixed particles are not degrees of freedom (y_a = 0). Sums in particle order: the result
-// does not depend on the number of threads.
+// first adds a pseudo-random vector of norm 0.1 drawn from a hash of the step and the particle's
+// global index, so that a mode newly the stiffest has a component to grow from, a restart draws
+// the same and so does any partition into ranks. Fixed particles are not degrees of freedom
+// (y_a = 0). On several ranks each rank visits the particles it owns, the ghosts take their
+// owners' y, and the sums are made exact (each term a whole number of 2^-30 of the largest): the
+// result does not depend on the ranks or the threads, bit for bit.
 
+#include "particles/ParticleRanks.hpp"
 #include "particles/Types.hpp"
 
 #include <algorithm>
@@ -38,12 +41,13 @@ public:
 
     struct Level
     {
-        const std::vector<Vec<D>>& x;           // x^n
+        const std::vector<Vec<D>>& x;           // x^n (owned particles and ghosts)
         const std::vector<Vec<D>>& T0;          // T(x^n)
         const std::vector<double>& m;           // masses
         const std::vector<std::uint8_t>& fixed; // fixed particles
         double h = 0.0;                         // the kernel's smoothing length
         long step = 0;                          // seeds the random part
+        const ParticleRanks& ranks;             // serial: a default-constructed one
     };
 
     // `iterations` products from the kept mode y (resized and drawn afresh if its size is not
@@ -61,37 +65,39 @@ public:
         Result result;
         for (int it = 0; it < iterations; ++it)
         {
-            const double norm = normalise(level, y);
-            if (!(norm > 0.0))
+            if (!(normalise(level, y) > 0.0))
             {
                 return result; // every particle fixed: nothing moves
             }
-            double largest = 0.0;
+            std::vector<double> largest{0.0};
             for (std::size_t a = 0; a < n; ++a)
             {
-                largest = std::max(largest, y[a].norm() / std::sqrt(level.m[a]));
+                if (level.ranks.counts(a))
+                {
+                    largest[0] = std::max(largest[0], y[a].norm() / std::sqrt(level.m[a]));
+                }
             }
-            const double eps = 1e-6 * level.h / largest;
+            level.ranks.maximum(largest);
+            const double eps = 1e-6 * level.h / largest[0];
             for (std::size_t a = 0; a < n; ++a)
             {
                 x[a] = level.x[a] + (eps / std::sqrt(level.m[a])) * y[a];
             }
             forcesAt(x, T);
-            double squared = 0.0;
             for (std::size_t a = 0; a < n; ++a)
             {
-                Ay[a] = level.fixed[a] ? Vec<D>::Zero()
-                                       : Vec<D>(-(T[a] - level.T0[a]) / (eps * std::sqrt(level.m[a])));
-                squared += Ay[a].squaredNorm();
+                Ay[a] = level.fixed[a] || !level.ranks.counts(a)
+                            ? Vec<D>::Zero()
+                            : Vec<D>(-(T[a] - level.T0[a]) / (eps * std::sqrt(level.m[a])));
             }
-            result.omega = std::sqrt(std::sqrt(squared)); // |A y| with |y| = 1
+            result.omega = std::sqrt(norm(level, Ay)); // |A y| with |y| = 1
             y.swap(Ay);
         }
         normalise(level, y);
         double largest = -1.0;
         for (std::size_t a = 0; a < n; ++a)
         {
-            if (y[a].norm() > largest)
+            if (level.ranks.counts(a) && y[a].norm() > largest)
             {
                 largest = y[a].norm();
                 result.where = a;
@@ -101,44 +107,90 @@ public:
     }
 
 private:
-    // y ← y/|y| (fixed particles zeroed); returns |y| before.
+    // |v| over the owned particles, exact in any order: each |v_a|² rounded to a whole number
+    // of quanta 2^-30 of the largest (the sum of up to 2^23 of them is exact in a double).
+    static double norm(const Level& level, const std::vector<Vec<D>>& v)
+    {
+        std::vector<double> largest{0.0};
+        for (std::size_t a = 0; a < v.size(); ++a)
+        {
+            if (level.ranks.counts(a))
+            {
+                largest[0] = std::max(largest[0], v[a].squaredNorm());
+            }
+        }
+        level.ranks.maximum(largest);
+        if (!(largest[0] > 0.0))
+        {
+            return 0.0;
+        }
+        const double quantum = largest[0] * 0x1.0p-30;
+        std::vector<double> quanta{0.0};
+        for (std::size_t a = 0; a < v.size(); ++a)
+        {
+            if (level.ranks.counts(a))
+            {
+                quanta[0] += std::nearbyint(v[a].squaredNorm() / quantum);
+            }
+        }
+        level.ranks.sum(quanta);
+        return std::sqrt(quanta[0] * quantum);
+    }
+
+    // y ← y/|y| over the owned particles (fixed ones zeroed), the ghosts' y their owners';
+    // returns |y| before.
     static double normalise(const Level& level, std::vector<Vec<D>>& y)
     {
-        double squared = 0.0;
         for (std::size_t a = 0; a < y.size(); ++a)
         {
             if (level.fixed[a])
             {
                 y[a].setZero();
             }
-            squared += y[a].squaredNorm();
         }
-        const double norm = std::sqrt(squared);
-        if (norm > 0.0)
+        const double length = norm(level, y);
+        if (length > 0.0)
         {
             for (auto& v : y)
             {
-                v /= norm;
+                v /= length;
             }
         }
-        return norm;
+        if (level.ranks.distributed())
+        {
+            std::vector<double> component(y.size());
+            for (int k = 0; k < D; ++k)
+            {
+                for (std::size_t a = 0; a < y.size(); ++a)
+                {
+                    component[a] = y[a][k];
+                }
+                level.ranks.shareWithGhosts(component);
+                for (std::size_t a = 0; a < y.size(); ++a)
+                {
+                    y[a][k] = component[a];
+                }
+            }
+        }
+        return length;
     }
 
-    // y ← y/|y| + 0.1 r/|r|, r uniform in [-½, ½] per component from a 64-bit linear
-    // congruential generator (Knuth's MMIX constants) seeded by the step: the same numbers on
-    // every machine and after a restart.
+    // y ← y/|y| + 0.1 r/|r|, r uniform in [-½, ½] per component from SplitMix64 (Steele, Lea &
+    // Flood 2014) of the step, the particle's global index and the component: the same numbers
+    // on every machine, after a restart and on any ranks.
     static void addNoise(const Level& level, std::vector<Vec<D>>& y)
     {
         normalise(level, y);
         std::vector<Vec<D>> r(y.size(), Vec<D>::Zero());
-        std::uint64_t state = 0x9E3779B97F4A7C15ULL ^ static_cast<std::uint64_t>(level.step);
         for (std::size_t a = 0; a < y.size(); ++a)
         {
             for (int k = 0; k < D; ++k)
             {
-                state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+                const std::uint64_t key = (static_cast<std::uint64_t>(level.step) << 32) ^
+                                          (static_cast<std::uint64_t>(level.ranks.global(a)) * D +
+                                           static_cast<std::uint64_t>(k));
                 r[a][k] = level.fixed[a] ? 0.0
-                                         : static_cast<double>(state >> 11) * 0x1.0p-53 - 0.5;
+                                         : static_cast<double>(splitMix(key) >> 11) * 0x1.0p-53 - 0.5;
             }
         }
         normalise(level, r);
@@ -146,6 +198,14 @@ private:
         {
             y[a] += 0.1 * r[a];
         }
+    }
+
+    static std::uint64_t splitMix(std::uint64_t z)
+    {
+        z += 0x9E3779B97F4A7C15ULL;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        return z ^ (z >> 31);
     }
 };
 

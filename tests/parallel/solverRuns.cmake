@@ -214,6 +214,16 @@ sph_add_solver_run("plastic impact UL gradF elasticState conserving weights bit-
                    ${sphImpactUL} -set stabilisation.plasticSamples=elasticState
                    -set stabilisation.moveWeights=conserving
                    -set controlDict.functions.energy.referenceMoves=yes)
+# The step from the forces' measured largest frequency (docs/theory/timeStep.md): the probe's
+# perturbed ghosts take their owners' mode, its sums are exact in any order, so every rank takes
+# the serial run's steps.
+# (writeControl timeStep: the steps are the integrator's own, not split to land on the tables'
+# times, so that a step differing in its last bit would show.)
+sph_add_solver_run("plastic impact UL gradF elasticState stepBound operator bit-identical on 2 ranks" 2
+                   ${sphImpact} bitIdentical -threads 1 -set endTime=2e-5
+                   ${sphImpactUL} -set stabilisation.plasticSamples=elasticState
+                   -set controlDict.writeControl=timeStep -set writeInterval=250
+                   -set "sphSchemes.timeIntegration={ stepBound operator\\; probeInterval 7\\; }")
 # With the close-pair energy (docs/theory/impenetrability.md) at a distance where it acts from the
 # first step (0.9 spacings: pairs across a rank's edge read the ghosts' positions).
 sph_add_solver_run("plastic impact UL gradF elasticState impenetrability bit-identical on 2 ranks" 2
@@ -232,6 +242,7 @@ foreach(test "plastic impact bit-identical on 2 ranks" "plastic impact bit-ident
              "plastic impact UL gradF per-sample history bit-identical on 3 ranks"
              "plastic impact UL gradF linearised bit-identical on 2 ranks"
              "plastic impact UL gradF elasticState conserving weights bit-identical on 2 ranks"
+             "plastic impact UL gradF elasticState stepBound operator bit-identical on 2 ranks"
              "plastic impact UL gradF elasticState impenetrability bit-identical on 2 ranks"
              "plastic impact UL gradF restart from 2 on 3 ranks bit-identical"
              "plastic impact UL gradF restart from 2 on 1 ranks bit-identical")

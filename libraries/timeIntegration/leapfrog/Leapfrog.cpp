@@ -106,6 +106,7 @@ public:
         scalars.bind("halfStepVelocity", halfStep_);
         if (probe_)
         {
+            mode_.assign(velocity.size(), Vec<D>::Zero()); // a field: one per particle
             fields.bind(FieldSpec::vector("operatorMode", "the mode of the largest frequency "
                                                           "of the forces, as the last probe "
                                                           "left it (stepBound operator)")

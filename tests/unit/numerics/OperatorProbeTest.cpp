@@ -16,6 +16,8 @@ using namespace sph;
 namespace
 {
 
+const ParticleRanks serial; // every particle owned, no reductions
+
 // A chain of n masses on a line joined by springs (stiffness k[i] between i and i+1); the two
 // end particles are fixed. The force along the line.
 struct SpringChain
@@ -80,7 +82,7 @@ struct SpringChain
     {
         std::vector<Vec<1>> T0;
         forces(x, T0);
-        return OperatorProbe<1>::run({x, T0, m, fixed, 1.0, step},
+        return OperatorProbe<1>::run({x, T0, m, fixed, 1.0, step, serial},
                                      [this](const std::vector<Vec<1>>& at, std::vector<Vec<1>>& T) {
                                          forces(at, T);
                                      },
@@ -209,6 +211,6 @@ TEST_CASE("operator probe: the largest frequency of a gradF cloud", "[operatorPr
 
     std::vector<Vec<2>> mode;
     const auto result =
-        OperatorProbe<2>::run({x, T0, m, fixed, fixture.kernel->h(), 0}, forcesAt, 300, mode);
+        OperatorProbe<2>::run({x, T0, m, fixed, fixture.kernel->h(), 0, serial}, forcesAt, 300, mode);
     CHECK(result.omega == Approx(exact).epsilon(1e-3));
 }
