@@ -160,13 +160,24 @@ void Simulation<D>::failWith(const std::string& diagnosis)
                   std::to_string(lastGood_.time) + " s) is written to " + lastOutputFile_ +
                   " (listed in VTK/" + caseName_ + ".pvd).";
     }
-    // What to try depends on what runs: a scheme never suggests itself.
+    // What to try depends on what runs: a scheme never suggests itself, nor the step bound.
     const std::string next = scheme_->nextToTry(formulation_->updatesReference(), historyMaterials_);
+    const auto probe = integrator_->operatorProbe();
+    std::string step = "lower courant";
+    if (probe && probe->controlsStep)
+    {
+        step += "; the step already follows the forces' measured largest frequency";
+    }
+    else if (!viscosity_->active() && !contact_->active())
+    {
+        step += ", or let the step follow the forces' measured largest frequency: "
+                "timeIntegration { stepBound operator; } (docs/theory/timeStep.md)";
+    }
     throw NumericalFailure(diagnosis + "\n" + written + "\nLikely causes: " +
                            (next.empty() ? std::string()
                                          : "the scheme is unstable for this problem (try " + next +
                                                "), ") +
-                           "the time step is too large (lower courant), the spacing too coarse "
+                           "the time step is too large (" + step + "), the spacing too coarse "
                            "for the deformation, or the deformation is beyond the material "
                            "model.");
 }
