@@ -14,14 +14,6 @@ using namespace sph;
 namespace
 {
 
-VtuData lastOutput(const std::filesystem::path& caseDir)
-{
-    PvdSeries series(caseDir / "VTK" / (caseDir.filename().string() + ".pvd"));
-    series.load();
-    REQUIRE(!series.entries().empty());
-    return readVtu(caseDir / "VTK" / series.entries().back().file);
-}
-
 // The plasticity2D/impact tutorial (1296 particles) in UL gradF elasticState, with `more`.
 int runImpact(const std::filesystem::path& folder, const std::vector<std::string>& more)
 {
@@ -47,7 +39,7 @@ TEST_CASE("the probed frequency is the leapfrog's stability limit", "[operatorPr
     const double courant = 0.01;
     REQUIRE(test::runSolver(caseDir, {"-set", "courant=0.01", "-set", "controlDict.maxSteps=1",
                                       "-set", "sphSchemes.timeIntegration={ probeInterval 1; }"}) == 0);
-    const VtuData first = lastOutput(caseDir);
+    const VtuData first = test::lastOutput(caseDir);
     const double omega = first.fieldData.at("restart:operatorFrequency").values.at(0);
     // ω̃ Δt per unit Courant number (Δt = courant h / c at F = I).
     const double perCourant = omega * first.fieldData.at("restart:firstDeltaT").values.at(0) / courant;
@@ -73,8 +65,8 @@ TEST_CASE("a probe that only reports leaves the run as it was, bit for bit", "[o
     REQUIRE(runImpact(plain.path(), {"-set", "endTime=4e-6"}) == 0);
     REQUIRE(runImpact(probed.path(), {"-set", "endTime=4e-6", "-set",
                                       "sphSchemes.timeIntegration={ probeInterval 5; }"}) == 0);
-    const VtuData a = lastOutput(plain.path() / "impact");
-    const VtuData b = lastOutput(probed.path() / "impact");
+    const VtuData a = test::lastOutput(plain.path() / "impact");
+    const VtuData b = test::lastOutput(probed.path() / "impact");
     // Every array of the plain run is in the probed one, bit for bit; the probed run adds the
     // probe's own state only.
     REQUIRE(a.points.size() == b.points.size());
@@ -114,7 +106,7 @@ TEST_CASE("stepBound operator keeps the plastic impact stable where the wave-spe
                         {"-set", "sphSchemes.timeIntegration={ stepBound operator; }"});
     REQUIRE(runImpact(measured.path(), withOperator) == 0);
     const VtuData first = readVtu(waveSpeed.path() / "impact" / "VTK" / "impact_0.vtu");
-    const VtuData last = lastOutput(measured.path() / "impact");
+    const VtuData last = test::lastOutput(measured.path() / "impact");
     CHECK(last.fieldData.at("restart:firstDeltaT").values.at(0) ==
           first.fieldData.at("restart:deltaT").values.at(0));
     // κ = ω̃_0 Δt_0 of the first level: about 0.69 × 0.5/0.3 for this kernel (§T2).

@@ -14,14 +14,6 @@ using namespace sph;
 namespace
 {
 
-VtuData lastOutput(const std::filesystem::path& caseDir)
-{
-    PvdSeries series(caseDir / "VTK" / (caseDir.filename().string() + ".pvd"));
-    series.load();
-    REQUIRE(!series.entries().empty());
-    return readVtu(caseDir / "VTK" / series.entries().back().file);
-}
-
 void checkRestart(const std::filesystem::path& whole, const std::filesystem::path& split,
                   double endTime, double stopTime, const std::vector<std::string>& tables,
                   const std::vector<std::string>& particleArgs = {})
@@ -32,7 +24,7 @@ void checkRestart(const std::filesystem::path& whole, const std::filesystem::pat
     REQUIRE(test::runSolver(split, {"-set", "endTime=" + std::to_string(stopTime)}) == 0);
     REQUIRE(test::runSolver(split, {"-set", "endTime=" + std::to_string(endTime), "-set",
                                     "controlDict.startFrom=latestTime"}) == 0);
-    test::requireIdenticalState(lastOutput(whole), lastOutput(split));
+    test::requireIdenticalState(test::lastOutput(whole), test::lastOutput(split));
     for (const auto& table : tables)
     {
         INFO(table);
@@ -85,8 +77,8 @@ TEST_CASE("restart continues bit-identically from an output written in several p
     const std::vector<std::string> halfSpacing{"-set", "ringA.spacing=5e-4", "-set",
                                                "ringB.spacing=5e-4"};
     checkRestart(whole, split, 2.4e-5, 0.8e-5, {"energy", "extent"}, halfSpacing);
-    REQUIRE(lastOutput(whole).pointCount() == 17608);
-    REQUIRE(lastOutput(whole).pointCount() > 2 * defaultVtuPieceSize);
+    REQUIRE(test::lastOutput(whole).pointCount() == 17608);
+    REQUIRE(test::lastOutput(whole).pointCount() > 2 * defaultVtuPieceSize);
 }
 
 TEST_CASE("restart continues bit-identically: 2D updated-Lagrangian with viscosity",
@@ -103,7 +95,7 @@ TEST_CASE("restart continues bit-identically: 2D updated-Lagrangian with viscosi
     const auto whole = test::writeBlockCase(one.path() / "block", schemes, 1e-3, 1e-4);
     const auto split = test::writeBlockCase(two.path() / "block", schemes, 1e-3, 1e-4);
     checkRestart(whole, split, 1e-3, 0.45e-3, {"energy", "corner"});
-    CHECK(lastOutput(whole).fieldData.at("restart:viscousWork").values.at(0) < 0.0);
+    CHECK(test::lastOutput(whole).fieldData.at("restart:viscousWork").values.at(0) < 0.0);
 }
 
 TEST_CASE("restart continues bit-identically: 2D block against walls", "[restart][walls]")
@@ -129,8 +121,8 @@ TEST_CASE("restart continues bit-identically: 2D block against walls", "[restart
     REQUIRE(test::runParticles(split) == 0);
     REQUIRE(test::runSolver(split, {"-set", "controlDict.maxSteps=10"}) == 0);
     REQUIRE(test::runSolver(split, {"-set", "controlDict.startFrom=latestTime"}) == 0);
-    const VtuData last = lastOutput(whole);
-    test::requireIdenticalState(last, lastOutput(split));
+    const VtuData last = test::lastOutput(whole);
+    test::requireIdenticalState(last, test::lastOutput(split));
     CHECK(last.fieldData.at("restart:wallWork:floor").values.at(0) < 0.0);  // friction
     CHECK(last.fieldData.at("restart:wallWork:pusher").values.at(0) > 0.0); // pushed
     for (const std::string table : {"energy", "walls"})
@@ -167,8 +159,8 @@ static void plasticImpactRestart(const std::vector<std::string>& extra)
     auto second = schemes;
     second.insert(second.end(), {"-set", "controlDict.startFrom=latestTime"});
     REQUIRE(test::runSolver(split, second) == 0);
-    const VtuData last = lastOutput(whole);
-    test::requireIdenticalState(last, lastOutput(split));
+    const VtuData last = test::lastOutput(whole);
+    test::requireIdenticalState(last, test::lastOutput(split));
     const auto& alpha = last.pointData.at("plasticStrain").values;
     CHECK(*std::max_element(alpha.begin(), alpha.end()) > 0.01); // it did flow
     CHECK(last.fieldData.at("restart:dissipatedEnergy").values.at(0) > 0.0);

@@ -84,6 +84,15 @@ inline VtuData runCoarseRings(const std::filesystem::path& folder,
     return readVtu(caseDir / "VTK" / series.entries().back().file);
 }
 
+// The last output a run wrote (VTK/<case folder name>.pvd's last entry).
+inline VtuData lastOutput(const std::filesystem::path& caseDir)
+{
+    PvdSeries series(caseDir / "VTK" / (caseDir.filename().string() + ".pvd"));
+    series.load();
+    REQUIRE(!series.entries().empty());
+    return readVtu(caseDir / "VTK" / series.entries().back().file);
+}
+
 // Two outputs hold the same state bit for bit: the points, every point array (display and
 // restart alike) and every number of the field data.
 inline void requireIdenticalState(const VtuData& a, const VtuData& b)

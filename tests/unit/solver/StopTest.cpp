@@ -34,20 +34,12 @@ nlohmann::json summaryOf(const std::filesystem::path& caseDir)
     return nlohmann::json::parse(in);
 }
 
-VtuData lastOutput(const std::filesystem::path& caseDir)
-{
-    PvdSeries series(caseDir / "VTK" / (caseDir.filename().string() + ".pvd"));
-    series.load();
-    REQUIRE(!series.entries().empty());
-    return readVtu(caseDir / "VTK" / series.entries().back().file);
-}
-
 // A run stopped and continued ends as the uninterrupted one: the last state bit for bit, the
 // tables and the .pvd byte for byte (the same outputs at the same times: the stopped level's
 // file is overwritten by the next output, which has its number).
 void requireSameRun(const std::filesystem::path& whole, const std::filesystem::path& split)
 {
-    test::requireIdenticalState(lastOutput(whole), lastOutput(split));
+    test::requireIdenticalState(test::lastOutput(whole), test::lastOutput(split));
     for (const std::string table : {"freeEnd", "energy", "tipError"})
     {
         INFO(table);
@@ -139,7 +131,7 @@ TEST_CASE("SIGTERM stops a run gracefully: a restartable level, the summary, exi
     CHECK(summary.at("stoppedBy") == "SIGTERM");
     CHECK(summary.at("failure") == "");
     // The level it stopped at is the last of the series, before endTime, and restartable.
-    const VtuData stopped = lastOutput(split);
+    const VtuData stopped = test::lastOutput(split);
     const double stopTime = stopped.fieldData.at("TimeValue").values.at(0);
     CHECK(stopTime == summary.at("time").get<double>());
     CHECK(stopTime < 1.5e-3);
@@ -218,7 +210,7 @@ TEST_CASE("stopAt writeNow written into controlDict while running stops the run 
     const auto summary = summaryOf(caseDir);
     CHECK(summary.at("status") == "stopped");
     CHECK(summary.at("stoppedBy") == "stopAt writeNow");
-    CHECK(lastOutput(caseDir).fieldData.at("TimeValue").values.at(0) ==
+    CHECK(test::lastOutput(caseDir).fieldData.at("TimeValue").values.at(0) ==
           summary.at("time").get<double>());
 
     // Still there at the restart, it stops the run at once, at the level restored; set back to

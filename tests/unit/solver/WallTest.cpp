@@ -16,19 +16,11 @@ constexpr double g = 9.81;
 const std::string block2D = "block { type box; min (0 0); max (0.06 0.03); spacing 0.01; }";
 const std::string floor2D = "floor { type plane; point (0 0); normal (0 1); ";
 
-VtuData lastOutput(const std::filesystem::path& caseDir)
-{
-    PvdSeries series(caseDir / "VTK" / (caseDir.filename().string() + ".pvd"));
-    series.load();
-    REQUIRE(!series.entries().empty());
-    return readVtu(caseDir / "VTK" / series.entries().back().file);
-}
-
 // The mean of component `d` of the displacement at the last output (the centroid's, since the
 // particles of a box have equal masses).
 double meanDisplacement(const std::filesystem::path& caseDir, int d)
 {
-    const VtuData last = lastOutput(caseDir);
+    const VtuData last = test::lastOutput(caseDir);
     const VtuArray& u = last.pointData.at("displacement");
     double sum = 0.0;
     const std::size_t n = u.values.size() / static_cast<std::size_t>(u.components);
