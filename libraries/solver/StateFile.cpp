@@ -108,6 +108,18 @@ void checkRestartFieldData(const VtuChecks& checks, const VtuData& data, const R
             std::any_of(scalars.arrays().begin(), scalars.arrays().end(),
                         [&](const RunScalars::Array& a) { return restartPrefix + a.name == name; }) ||
             std::find(raggedNames.begin(), raggedNames.end(), name) != raggedNames.end();
+        const bool scalar =
+            std::any_of(scalars.all().begin(), scalars.all().end(),
+                        [&](const RunScalars::Scalar& s) { return restartPrefix + s.name == name; });
+        if (!runArray && !scalar && array.values.size() != 1)
+        {
+            // An array of another setting's model (gradF's per-sample history read by a run
+            // without it): say so rather than that it is not one number.
+            checks.fail("it holds the restart array '" + name + "' (" +
+                        std::to_string(array.values.size()) +
+                        " values), which none of this run's models keeps: it was written with "
+                        "other settings (scheme, its options, material) than this run's");
+        }
         checks.fieldArray(name, runArray ? 0 : 1);
     }
     // The solver's step counter (written with the output) becomes a long.
@@ -275,6 +287,14 @@ void readState(const VtuData& data, ParticleFields<D>& fields, const RunScalars&
         }
         const bool display = spec.isDisplay();
         const int stored = display ? displayComponents(spec.kind()) : native;
+        if (!data.pointData.count(spec.fileName()))
+        {
+            // Restart data this run's models declare but the writer's did not: say what it is,
+            // so that a changed setting (a new scheme option, a probe) is recognisable.
+            checks.fail("it has no array '" + spec.fileName() + "' (" + spec.description() +
+                        "): the run that wrote it did not use the model that keeps it; start "
+                        "afresh, or restart with the settings it was written with");
+        }
         const VtuArray& array = checks.pointArray(spec.fileName(), stored);
         if (spec.kind() == FieldKind::integer)
         {

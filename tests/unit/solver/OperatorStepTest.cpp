@@ -117,3 +117,20 @@ TEST_CASE("stepBound operator keeps the plastic impact stable where the wave-spe
     CHECK(last.fieldData.at("restart:deltaT").values.at(0) <
           0.9 * last.fieldData.at("restart:firstDeltaT").values.at(0));
 }
+
+// A restart from an output written without the probe, with the probe now asked for: the missing
+// restart data is named with what keeps it, not only as a missing array.
+TEST_CASE("a restart that adds the probe says which setting changed", "[operatorProbe][restart]")
+{
+    test::TempDir dir;
+    REQUIRE(runImpact(dir.path(), {"-set", "endTime=2e-6"}) == 0);
+    CHECK_THROWS_WITH(
+        test::runSolver(dir.path() / "impact",
+                        {"-set", "formulation.type=updatedLagrangian", "-set",
+                         "stabilisation.type=gradF", "-set",
+                         "stabilisation.plasticSamples=elasticState", "-set", "endTime=4e-6",
+                         "-set", "controlDict.startFrom=latestTime", "-set",
+                         "sphSchemes.timeIntegration={ stepBound operator; }"}),
+        Catch::Contains("restart:operatorMode' (the mode of the largest frequency") &&
+            Catch::Contains("did not use the model that keeps it"));
+}

@@ -208,6 +208,23 @@ TEST_CASE("restart continues bit-identically: 2D plastic impact, stepBound opera
                           "sphSchemes.timeIntegration={ stepBound operator; probeInterval 7; }"});
 }
 
+// An output of UL gradF elasticState (per-sample history, a run array) continued as TL none:
+// the refusal names the array and that the settings differ, not "holds N values, not 1".
+TEST_CASE("restart with another scheme names the history it does not keep", "[restart][errors]")
+{
+    test::TempDir dir;
+    const auto caseDir = test::copyTutorial("plasticity2D/impact", dir.path());
+    REQUIRE(test::runParticles(caseDir) == 0);
+    REQUIRE(test::runSolver(caseDir, {"-set", "formulation.type=updatedLagrangian", "-set",
+                                      "stabilisation.type=gradF", "-set",
+                                      "stabilisation.plasticSamples=elasticState", "-set",
+                                      "endTime=2e-6"}) == 0);
+    CHECK_THROWS_WITH(test::runSolver(caseDir, {"-set", "endTime=4e-6", "-set",
+                                                "controlDict.startFrom=latestTime"}),
+                      Catch::Contains("the restart array 'restart:sampleHistory'") &&
+                          Catch::Contains("other settings"));
+}
+
 // A .pvd that is a link to itself (a loop) gave "FATAL ERROR (internal) filesystem error";
 // a restart now names the file and the reason (issue 31).
 TEST_CASE("restart: a time series that links to itself is an input error", "[restart][errors]")
