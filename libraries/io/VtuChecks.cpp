@@ -97,12 +97,13 @@ void VtuChecks::finitePoints() const
     }
 }
 
-const VtuArray& VtuChecks::pointArray(const std::string& name, int components) const
+const VtuArray& VtuChecks::pointArray(const std::string& name, int components,
+                                      const std::string& whenMissing) const
 {
     const auto found = data_.pointData.find(name);
     if (found == data_.pointData.end())
     {
-        fail("it has no array '" + name + "'");
+        fail("it has no array '" + name + "'" + (whenMissing.empty() ? "" : " " + whenMissing));
     }
     const VtuArray& array = found->second;
     if (array.components != components)

@@ -28,7 +28,9 @@ public:
     // Every coordinate of every point is finite.
     void finitePoints() const;
     // Point array `name`: present, `components` per point, every value finite.
-    const VtuArray& pointArray(const std::string& name, int components) const;
+    // `whenMissing`: what the array is and why it may be missing, appended to the message.
+    const VtuArray& pointArray(const std::string& name, int components,
+                               const std::string& whenMissing = "") const;
     // Field-data array `name`: present, `size` values (0: any number, none too), all finite.
     const VtuArray& fieldArray(const std::string& name, std::size_t size) const;
     // Every value of `array` (the point array or field data `name`) is > 0.

@@ -350,29 +350,6 @@ ForceStatus Simulation<D>::computeForces(bool atReference, bool wantEnergy)
     return status;
 }
 
-// Power iterations on the forces at perturbed positions about x^n, whose force T(x^n) is in
-// acceleration_ (before accelerate()); then the level's own evaluation once more, so that F, P,
-// the forces and every scheme's and material's scratch state are the level's again, bit for
-// bit (each evaluation is a function of the positions and the committed state only).
-template <int D>
-typename OperatorProbe<D>::Result Simulation<D>::probeOperator(int iterations,
-                                                               std::vector<Vec<D>>& mode)
-{
-    const std::vector<Vec<D>> x = particles_.x;
-    const std::vector<Vec<D>> T = acceleration_;
-    const auto forcesAt = [this](const std::vector<Vec<D>>& perturbed, std::vector<Vec<D>>& forces) {
-        particles_.x = perturbed;
-        computeForces(false, false);
-        forces = acceleration_;
-    };
-    const typename OperatorProbe<D>::Result result = OperatorProbe<D>::run(
-        {x, T, particles_.m, particles_.fixed, kernel_->h(), step_, ranks_}, forcesAt, iterations,
-        mode);
-    particles_.x = x;
-    computeForces(levelAtReference_, levelWantsEnergy_);
-    return result;
-}
-
 // a = T/m + g in place of the forces; fixed particles discard theirs.
 template <int D>
 void Simulation<D>::accelerate()

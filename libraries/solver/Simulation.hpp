@@ -86,9 +86,13 @@ private:
     void setupWalls();
     void setupViscosity(const SchemeSettings& schemes);
     void setupImpenetrability(const SchemeSettings& schemes);
-    void setupOperatorProbe();   // stepBound operator: the probe, or why not (timeStep.md §T4)
     void setupFunctionObjects();
     void checkCrossingOrder();
+    // SimulationOperatorProbe.cpp (docs/theory/timeStep.md)
+    void setupOperatorProbe(); // stepBound operator: the probe, or why not (§T4)
+    // The operator's largest frequency at this level (§T3); leaves the level's own forces, F, P
+    // and scratch states as they were.
+    typename OperatorProbe<D>::Result probeOperator(int iterations, std::vector<Vec<D>>& mode);
     // SimulationBodies.cpp
     void setupBodies(const Dictionary& bodies);
     // Sets body b's initial stress (constant/bodies: initialStress { type ...; }).
@@ -112,9 +116,6 @@ private:
     };
     Step stepToTake() const;
     bool outputDueNow() const; // the VTK output is due at this level
-    // The operator's largest frequency at this level (docs/theory/timeStep.md §T3); leaves the
-    // level's own forces, F, P and scratch states as they were.
-    typename OperatorProbe<D>::Result probeOperator(int iterations, std::vector<Vec<D>>& mode);
     bool moveReference(long firstStep);           // x^n -> the reference configuration
     bool energyWanted(long firstStep) const;      // the function objects' needs -> bool
     double strainEnergyNow();                     // x^n, the reference as it is -> Π

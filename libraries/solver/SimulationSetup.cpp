@@ -101,49 +101,6 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
     declareFields();
 }
 
-// stepBound operator measures the internal forces only (docs/theory/timeStep.md §T4): what acts
-// besides them with a stiffness of its own is refused, the walls' bound is kept as a cap.
-template <int D>
-void Simulation<D>::setupOperatorProbe()
-{
-    const std::optional<OperatorProbeRequest> request = integrator_->operatorProbe();
-    if (!request)
-    {
-        return;
-    }
-    const auto refuse = [&request](const std::string& what, const std::string& hint) {
-        throw InputError(request->where,
-                         "stepBound operator measures the internal forces only; " + what,
-                         {hint, "stepBound waveSpeed (the default) runs it; 'probeInterval N;' "
-                                "with waveSpeed reports omega dt (docs/theory/timeStep.md §T4)."});
-    };
-    integrator_->setOperatorFrequency(
-        [this](int iterations, std::vector<Vec<D>>& mode) { return probeOperator(iterations, mode); });
-    if (!request->controlsStep)
-    {
-        return; // it only reports
-    }
-    if (viscosity_->active())
-    {
-        refuse("an artificial viscosity bounds the step by its own signal speed",
-               "Remove artificialViscosity from system/sphSchemes.");
-    }
-    if (contact_->active())
-    {
-        refuse("the contact between bodies has a stiffness of its own",
-               "Use one body, or contact { type none; }.");
-    }
-    if (!walls_->empty())
-    {
-        double c0 = 0.0;
-        for (const auto& material : materialModels_)
-        {
-            c0 = std::max(c0, material->waveSpeed(Mat<D>::Identity()));
-        }
-        wallDeltaT_ = control_.courant * kernel_->h() / c0;
-    }
-}
-
 template <int D>
 Simulation<D>::~Simulation() = default;
 

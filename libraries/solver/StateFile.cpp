@@ -287,15 +287,12 @@ void readState(const VtuData& data, ParticleFields<D>& fields, const RunScalars&
         }
         const bool display = spec.isDisplay();
         const int stored = display ? displayComponents(spec.kind()) : native;
-        if (!data.pointData.count(spec.fileName()))
-        {
-            // Restart data this run's models declare but the writer's did not: say what it is,
-            // so that a changed setting (a new scheme option, a probe) is recognisable.
-            checks.fail("it has no array '" + spec.fileName() + "' (" + spec.description() +
-                        "): the run that wrote it did not use the model that keeps it; start "
-                        "afresh, or restart with the settings it was written with");
-        }
-        const VtuArray& array = checks.pointArray(spec.fileName(), stored);
+        // Restart data this run's models declare but the writer's may not have: say what it
+        // is, so that a changed setting (a new scheme option, a probe) is recognisable.
+        const VtuArray& array = checks.pointArray(
+            spec.fileName(), stored,
+            "(" + spec.description() + "): the run that wrote it did not use the model that "
+            "keeps it; start afresh, or restart with the settings it was written with");
         if (spec.kind() == FieldKind::integer)
         {
             // Integer fields are flags and ids held in an int (or narrower).

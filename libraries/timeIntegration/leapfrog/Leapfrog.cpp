@@ -34,7 +34,9 @@ public:
     static std::string description()
     {
         return "Leapfrog (kick-drift with half-step velocities, seed eqs. 15-16): second "
-               "order, one force evaluation per step, Δt = courant h / max c.";
+               "order, one force evaluation per step, Δt = courant h / max c, or (stepBound "
+               "operator) kept at the first step's margin to the forces' measured largest "
+               "frequency.";
     }
     static Schema schema()
     {
