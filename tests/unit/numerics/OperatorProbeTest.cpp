@@ -4,7 +4,7 @@
 // had no component; on a CSPH cloud (gradF, yielding material) it equals the largest eigenvalue
 // of the assembled stiffness; fixed particles are not degrees of freedom.
 #include "numerics/NumericsSupport.hpp"
-#include "timeIntegration/OperatorProbe.hpp"
+#include "timeIntegration/TimeIntegration.hpp"
 
 #include <Eigen/Eigenvalues>
 
@@ -213,4 +213,41 @@ TEST_CASE("operator probe: the largest frequency of a gradF cloud", "[operatorPr
     const auto result =
         OperatorProbe<2>::run({x, T0, m, fixed, fixture.kernel->h(), 0, serial}, forcesAt, 300, mode);
     CHECK(result.omega == Approx(exact).epsilon(1e-3));
+}
+
+// The rule (T4.1) of `stepBound operator` in the leapfrog, with a stand-in for the solver's
+// probe: the first level takes the wave-speed step and keeps κ = ω̃_0 Δt_0; a probe that
+// measures twice the frequency halves the step, half the frequency doubles it unless the walls'
+// cap is lower; between probes the step is kept; a frequency that explodes is a collapse.
+TEST_CASE("stepBound operator: the step keeps the first level's margin, capped by the walls",
+          "[operatorProbe]")
+{
+    auto leapfrog = test::build<TimeIntegration<1>>(
+        "type leapfrog; stepBound operator; probeInterval 5;", {0.3, 1}, 1);
+    ParticleFields<1> fields;
+    fields.setSize(3);
+    RunScalars scalars;
+    std::vector<Vec<1>> v(3, Vec<1>::Zero());
+    leapfrog->attach(v, fields, scalars);
+    double omega = 1000.0;
+    leapfrog->setOperatorFrequency([&omega](int, std::vector<Vec<1>>&) {
+        return OperatorProbe<1>::Result{omega, 1};
+    });
+    WaveSpeedBound bound{0.01, [] { return 100.0; }, [] { return std::size_t{0}; }};
+    REQUIRE(leapfrog->chooseTimeStep(0, true, bound).ok());
+    const double first = 0.3 * 0.01 / 100.0;
+    CHECK(leapfrog->deltaT() == Approx(first));
+    omega = 2000.0; // stiffer: half the step, at the next probe only
+    REQUIRE(leapfrog->chooseTimeStep(3, false, bound).ok());
+    CHECK(leapfrog->deltaT() == Approx(first));
+    REQUIRE(leapfrog->chooseTimeStep(5, false, bound).ok());
+    CHECK(leapfrog->deltaT() == Approx(0.5 * first));
+    omega = 500.0; // softer: twice the step without walls...
+    REQUIRE(leapfrog->chooseTimeStep(10, false, bound).ok());
+    CHECK(leapfrog->deltaT() == Approx(2.0 * first));
+    bound.wallDeltaT = 1.2 * first; // ...and the walls' cap with them
+    REQUIRE(leapfrog->chooseTimeStep(15, false, bound).ok());
+    CHECK(leapfrog->deltaT() == Approx(1.2 * first));
+    omega = 1e12;
+    CHECK(leapfrog->chooseTimeStep(20, false, bound).failure == FailureKind::timeStepCollapse);
 }
