@@ -40,6 +40,18 @@ void Simulation<D>::setupOperatorProbe()
         refuse("the contact between bodies has a stiffness of its own",
                "Use one body, or contact { type none; }.");
     }
+    if (scheme_->vanishesAtReference() && formulation_->updatesReference() &&
+        formulation_->updateDue(1, 0))
+    {
+        // Measured on the column collapse at 5 mm: 420 000 steps against updatedLagrangian
+        // none's 10 000, for the same motion to every digit.
+        refuse("with the reference moved before every evaluation the stabilisation's force is "
+               "zero wherever the forces are evaluated, but the probe's perturbed positions "
+               "feel its stiffness, so the measured step would be far smaller than the motion "
+               "needs",
+               "updatedLagrangian with hourglass moves as updatedLagrangian with none to every "
+               "digit: use stabilisation none, or formulation totalLagrangian.");
+    }
     if (!walls_->empty())
     {
         double c0 = 0.0;

@@ -210,6 +210,12 @@ public:
     // Whether moveHistory() changes the materials' own (per-particle) history.
     virtual bool movesParticleHistory() const { return false; }
 
+    // Whether the scheme's own force vanishes wherever the positions are the reference's
+    // (hourglass control measures the deviation from the affine map since the last move): with
+    // the reference moved before every evaluation it then never acts, though perturbed
+    // positions feel it (stepBound operator refuses that, docs/theory/timeStep.md §T4).
+    virtual bool vanishesAtReference() const { return false; }
+
     // What to try next when a run with this scheme fails (the solver's diagnosis): a scheme
     // that cannot help itself names another; `updated`: the reference moves, `plastic`: some
     // material keeps a plastic history.

@@ -46,6 +46,7 @@ public:
     {
         return core_.energy(in, StandardGradients<D>{in.ref});
     }
+    bool vanishesAtReference() const override { return true; }
 
     // The hourglass force on particle a alone (public for the pairwise test).
     Vec<D> hourglassForce(std::size_t a, const ForceInput<D>& in,
