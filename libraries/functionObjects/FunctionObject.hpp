@@ -59,7 +59,9 @@ struct WallLoads
 {
     std::vector<std::string> names;
     std::vector<Vec<D>> force;       // Σ_a (F_n + F_t): the force the wall exerts on the solid
-    std::vector<double> normalForce; // Σ_a |F_n|
+    // Σ_a F_n, the normal part of `force`: for a plane its magnitude is Σ_a |F_n|; for a box
+    // (walls/box) the contacts on opposite faces cancel in it, as in the load they put on it.
+    std::vector<Vec<D>> normalForce;
     std::vector<double> work;        // its work on the solid since t = 0 (the energy audit's)
 };
 

@@ -1,12 +1,18 @@
 #pragma once
 // Rigid walls (constant/walls, an optional file): one entry per wall,
 //
-//   floor { type plane; point (0 0); normal (0 1); friction 0.3; bodies (bar); removeAt 0.5; }
+//   floor   { type plane; point (0 0); normal (0 1); friction 0.3; bodies (bar); removeAt 0.5; }
+//   footing { type box; min (-0.05 0.2); max (0.05 0.3); velocity (0 -1e-3); friction 1; }
 //
-// (the types: sphSolid -listTypes wall). A wall type defines only its shape at t = 0, as the
-// signed distance of a point along the outward normal; what every wall has — friction, a
-// prescribed translation, the bodies it acts on, the time it is removed — is read here, and the
-// contact law that turns distances into forces is one for all types (walls/WallSet.hpp).
+// The types (sphSolid -listTypes wall prints their keys):
+//   plane | an infinite plane (a line in 2D, a point in 1D), the solid on its normal's side
+//         | (walls/plane/PlaneWall.cpp)
+//   box   | a finite axis-aligned box [min, max] (a rectangle in 2D, an interval in 1D), the
+//         | solid outside it: a footing or a punch (walls/box/BoxWall.cpp)
+// A wall type defines only its shape at t = 0, as the signed distance of a point along the
+// outward normal; what every wall has — friction, a prescribed translation, the bodies it acts
+// on, the time it is removed — is read here, and the contact law that turns distances into
+// forces is one for all types (walls/WallSet.hpp).
 //
 // Keys common to every wall:
 //   friction | Coulomb coefficient μ >= 0                                  | 0

@@ -2,7 +2,8 @@
 // The case's rigid walls (constant/walls) and their contact law, one for every wall type.
 //
 // Contact: particle a is a sphere of radius r0 = s/2 (s the initial particle spacing). With its
-// signed distance d_a = (x_a - p(t))·n̂ from the wall (Wall::side), the penetration
+// signed distance d_a from the wall and the wall's outward normal n̂ there (Wall::side; a plane's
+// d_a = (x_a - p(t))·n̂), the penetration
 //   δ_a = r0 - d_a > 0
 // stores the potential φ_a = ½ k_a δ_a² and gives the normal force F_n = k_a δ_a n̂, with
 //   k_a = M_b V0_a / s²,   M_b = ρ0 c0² of the particle's body (c0 = c(F = I)):
@@ -12,6 +13,12 @@
 //   ω Δt <= α hOverDx            (0.45 for α = 0.3, hOverDx = 1.5),
 // well below the leapfrog's limit of 2; the solver refuses walls when α hOverDx >= 1, which
 // leaves room for the particle's own internal stiffness.
+// The bound holds for every wall shape whose signed distance d has |∇d| = 1 with n̂ = ∇d and is
+// convex on the solid's side (a plane; a box, walls/box): the Hessian of φ_a is
+//   k_a n̂ n̂ᵀ - k_a δ_a ∇²d,
+// k_a along n̂ and, off an edge or a corner of a box (d the distance to a line or a point,
+// ∇²d = (I - n̂ n̂ᵀ)/d), -k_a δ_a/d <= 0 across it: a particle slides off a corner (a physical
+// instability, as a ball on a peak), which raises no frequency above c0/s.
 //
 // Friction (μ > 0): a tangential force opposing the sliding relative to the wall,
 //   v_t = tangential part of (v^{n-1/2} + Δt_n a - V_wall),
@@ -85,7 +92,7 @@ public:
             loads_.names.push_back(entry.key());
         }
         loads_.force.assign(walls_.size(), Vec<D>::Zero());
-        loads_.normalForce.assign(walls_.size(), 0.0);
+        loads_.normalForce.assign(walls_.size(), Vec<D>::Zero());
         loads_.work.assign(walls_.size(), 0.0);
         contacts_.resize(walls_.size());
         work_.assign(walls_.size(), 0.0);
@@ -121,7 +128,7 @@ public:
         {
             const Wall<D>& wall = *walls_[w];
             Vec<D> total = Vec<D>::Zero();
-            double normalTotal = 0.0;
+            Vec<D> normalTotal = Vec<D>::Zero();
             contacts_[w].clear();
             forEachParticle(p, w, t, [&](std::size_t i) {
                 const auto side = wall.side(p.x[i], t);
@@ -133,7 +140,8 @@ public:
                 const double k = stiffness(p, i);
                 const double normal = k * depth;
                 potential_ += 0.5 * k * depth * depth;
-                Vec<D> force = normal * side.normal;
+                const Vec<D> normalForce = normal * side.normal;
+                Vec<D> force = normalForce;
                 if (wall.friction() > 0.0)
                 {
                     const Vec<D> friction = frictionForce(wall, side.normal, normal, p.m[i],
@@ -143,7 +151,7 @@ public:
                 }
                 a[i] += force / p.m[i];
                 total += force;
-                normalTotal += normal;
+                normalTotal += normalForce;
             });
             loads_.force[w] = total;
             loads_.normalForce[w] = normalTotal;
@@ -154,14 +162,15 @@ public:
             for (std::size_t w = 0; w < walls_.size(); ++w)
             {
                 sums.insert(sums.end(), loads_.force[w].data(), loads_.force[w].data() + D);
-                sums.push_back(loads_.normalForce[w]);
+                sums.insert(sums.end(), loads_.normalForce[w].data(),
+                            loads_.normalForce[w].data() + D);
             }
             sums.push_back(potential_);
             ranks_->sum(sums);
             for (std::size_t w = 0; w < walls_.size(); ++w)
             {
-                std::copy_n(&sums[w * (D + 1)], D, loads_.force[w].data());
-                loads_.normalForce[w] = sums[w * (D + 1) + D];
+                std::copy_n(&sums[w * 2 * D], D, loads_.force[w].data());
+                std::copy_n(&sums[w * 2 * D + D], D, loads_.normalForce[w].data());
             }
             potential_ = sums.back();
         }

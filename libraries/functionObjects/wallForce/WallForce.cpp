@@ -1,12 +1,14 @@
 // `wallForce`: what each rigid wall of constant/walls does to the solid (walls/WallSet.hpp).
 // Columns, per wall W:
 //   W_Fx W_Fy (W_Fz)  the force the wall exerts on the particles at x^n, Σ_a (F_n + F_t)
-//                     [N; in 2D per unit thickness, N/m]
+//                     [N; in 2D per unit thickness, N/m]; the load the solid puts on the wall
+//                     (a footing's bearing load, the weight a floor carries) is its opposite
 //   W_work            its work on the solid since t = 0 [J; 2D J/m]: moving and removing the
 //                     wall, and friction (the energy audit's, so it is the `wallWork` of the
 //                     `energy` table wall by wall)
-// Results (summary.json): W_peakNormalForce (the largest Σ_a |F_n| seen at any level, not only
-// the written rows) and W_work at the end.
+// Results (summary.json): W_peakNormalForce (the largest |Σ_a F_n| seen at any level, not only
+// the written rows: a plane's Σ_a |F_n|; for a box the normal part of its load, the contacts on
+// opposite faces cancelling as they do on the body) and W_work at the end.
 // Keys: writeInterval (see FunctionObject.hpp).
 #include "core/InputError.hpp"
 #include "functionObjects/FunctionObjectModel.hpp"
@@ -61,7 +63,7 @@ public:
         const WallLoads<D>& loads = *state.walls;
         for (std::size_t w = 0; w < names_.size(); ++w)
         {
-            peak_[w] = std::max(peak_[w], loads.normalForce[w]);
+            peak_[w] = std::max(peak_[w], loads.normalForce[w].norm());
             work_[w] = loads.work[w];
         }
         if (!this->rowDue(state.time, state.deltaT))
@@ -109,7 +111,7 @@ public:
 
 private:
     std::vector<std::string> names_;
-    std::vector<double> peak_; // by wall: the largest Σ |F_n| so far
+    std::vector<double> peak_; // by wall: the largest |Σ F_n| so far
     std::vector<double> work_; // by wall: the work at the last level seen
 };
 

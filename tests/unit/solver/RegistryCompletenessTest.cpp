@@ -49,7 +49,7 @@ const std::map<std::string, std::map<int, Names>>& expected()
         {"timeIntegration", {{1, {"leapfrog"}}, {2, {"leapfrog"}}, {3, {"leapfrog"}}}},
         {"artificialViscosity",
          {{1, {"monaghan", "none"}}, {2, {"monaghan", "none"}}, {3, {"monaghan", "none"}}}},
-        {"wall", {{1, {"plane"}}, {2, {"plane"}}, {3, {"plane"}}}},
+        {"wall", {{1, {"box", "plane"}}, {2, {"box", "plane"}}, {3, {"box", "plane"}}}},
         {"functionObject",
          {{1, {"energy", "exactSolution", "extent", "oscillation", "probes", "snapshot", "stabilityMonitor", "wallForce"}},
           {2, {"energy", "extent", "failureLine", "oscillation", "probes", "snapshot", "stabilityMonitor", "surfaceProfile",

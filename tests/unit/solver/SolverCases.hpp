@@ -6,6 +6,7 @@
 #include "support/CaseRunner.hpp"
 
 #include <fstream>
+#include <limits>
 
 namespace sph::test
 {
@@ -34,17 +35,24 @@ inline std::filesystem::path writeBlockCase(const std::filesystem::path& folder,
     return folder;
 }
 
-// ∫ f dt / (t_end - t_0) over the rows of a table (trapezoid rule; the steps vary a little).
-inline double timeAverage(const Table& table, const std::string& column)
+// ∫ f dt / (t_end - t_0) over the rows of a table from time `from` on (trapezoid rule; the
+// steps vary a little).
+inline double timeAverage(const Table& table, const std::string& column,
+                          double from = -std::numeric_limits<double>::infinity())
 {
     const auto t = table.column("time");
     const auto f = table.column(column);
     double integral = 0.0;
+    double duration = 0.0;
     for (std::size_t i = 1; i < t.size(); ++i)
     {
-        integral += 0.5 * (f[i] + f[i - 1]) * (t[i] - t[i - 1]);
+        if (t[i - 1] >= from)
+        {
+            integral += 0.5 * (f[i] + f[i - 1]) * (t[i] - t[i - 1]);
+            duration += t[i] - t[i - 1];
+        }
     }
-    return integral / (t.back() - t.front());
+    return integral / duration;
 }
 
 // A small block of stiff linear-elastic material (c0 = 116 m/s, spacing 1 cm) against rigid
