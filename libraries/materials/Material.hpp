@@ -140,6 +140,22 @@ public:
         (void)a;
         (void)out;
     }
+    // The packed state of a point never committed (what packHistory gives for a new particle).
+    virtual void packInitialHistory(double* out) const { (void)out; }
+    // A compact form of packed states, for stores of many (gradF's samples): compact() writes
+    // compactHistoryComponents() numbers from which expandHistory() gives the packed state back
+    // bit for bit, and returns false for a state it could not give back so. By default the
+    // packed state itself.
+    virtual std::size_t compactHistoryComponents() const { return historyComponents(); }
+    virtual bool compactHistory(const double* packed, double* out) const
+    {
+        std::copy(packed, packed + historyComponents(), out);
+        return true;
+    }
+    virtual void expandHistory(const double* compact, double* out) const
+    {
+        std::copy(compact, compact + historyComponents(), out);
+    }
     // A packed state (packHistory's layout) re-expressed so that its elastic state be at the
     // gradient `to` is the one it had at `from` (docs/theory/gradF-plastic.md (G4.1)): what a
     // stress sample's state becomes when the reference it is measured from moves.

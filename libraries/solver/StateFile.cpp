@@ -189,17 +189,24 @@ void writeStateHeader(const ParticleFields<D>& fields, const RunScalars& scalars
     {
         header.fieldData[restartPrefix + array.name] = VtuArray{1, *array.values, false, {}, {}};
     }
-    // The entries of the written particles, in their order (their counts are point data).
+    // The entries of the written particles, in their order (their counts are point data),
+    // into an array of their exact size (grown entry by entry it took up to twice that, and
+    // gradF's samples are the largest data of a plastic run).
     for (const RaggedArray* ragged : fields.ragged())
     {
         const std::size_t n = selection ? selection->size() : fields.size();
-        VtuArray entries{static_cast<int>(ragged->width()), {}, false, {}, {}};
+        std::size_t total = 0;
+        for (std::size_t k = 0; k < n; ++k)
+        {
+            total += ragged->entries(selection ? (*selection)[k] : k) * ragged->width();
+        }
+        VtuArray entries{static_cast<int>(ragged->width()), std::vector<double>(total), false, {}, {}};
+        double* out = entries.values.data();
         for (std::size_t k = 0; k < n; ++k)
         {
             const std::size_t a = selection ? (*selection)[k] : k;
-            const std::size_t count = ragged->entries(a) * ragged->width();
-            entries.values.resize(entries.values.size() + count);
-            ragged->get(a, entries.values.data() + entries.values.size() - count);
+            ragged->get(a, out);
+            out += ragged->entries(a) * ragged->width();
         }
         header.fieldData[restartPrefix + ragged->name()] = std::move(entries);
     }

@@ -12,6 +12,8 @@
 
 #include "materials/Material.hpp"
 
+#include <algorithm>
+#include <cstring>
 #include <memory>
 
 namespace sph
@@ -29,6 +31,14 @@ struct PlasticState
     static constexpr std::size_t packedSize = D * D + (D == 2 ? 1 : 0) + 1;
     void pack(double* out) const;
     static PlasticState unpack(const double* in);
+
+    // The compact form of a packed state (Material::compactHistory): Cp⁻¹ is symmetric, so its
+    // upper triangle row by row, then the rest as packed (3D: 7 numbers, not 10). compact()
+    // says whether expand() gives the state back bit for bit (its Cp⁻¹ is symmetric to the bit,
+    // as every update of it makes it: ½ (C + Cᵀ)).
+    static constexpr std::size_t compactSize = D * (D + 1) / 2 + (D == 2 ? 1 : 0) + 1;
+    static bool compact(const double* packed, double* out);
+    static void expand(const double* compact, double* packed);
 };
 
 // What a return did at one point: its plastic multiplier (> 0: the point flows), the α it
@@ -94,6 +104,36 @@ inline PlasticState<D> PlasticState<D>::unpack(const double* in)
     }
     s.alpha = in[packedSize - 1];
     return s;
+}
+
+template <int D>
+inline bool PlasticState<D>::compact(const double* packed, double* out)
+{
+    bool symmetric = true;
+    for (int i = 0; i < D; ++i)
+    {
+        for (int j = i; j < D; ++j)
+        {
+            *out++ = packed[i * D + j];
+            symmetric = symmetric && std::memcmp(&packed[i * D + j], &packed[j * D + i], sizeof(double)) == 0;
+        }
+    }
+    std::copy(packed + D * D, packed + packedSize, out);
+    return symmetric;
+}
+
+template <int D>
+inline void PlasticState<D>::expand(const double* compact, double* packed)
+{
+    for (int i = 0; i < D; ++i)
+    {
+        for (int j = i; j < D; ++j)
+        {
+            packed[i * D + j] = *compact;
+            packed[j * D + i] = *compact++;
+        }
+    }
+    std::copy(compact, compact + (packedSize - D * D), packed + D * D);
 }
 
 template <int D>

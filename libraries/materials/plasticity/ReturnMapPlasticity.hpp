@@ -75,6 +75,16 @@ public:
 
     std::size_t historyComponents() const override { return State::packedSize; }
     void packHistory(std::size_t a, double* out) const override { state(a).pack(out); }
+    void packInitialHistory(double* out) const override { State{}.pack(out); }
+    std::size_t compactHistoryComponents() const override { return State::compactSize; }
+    bool compactHistory(const double* packed, double* out) const override
+    {
+        return State::compact(packed, out);
+    }
+    void expandHistory(const double* compact, double* out) const override
+    {
+        State::expand(compact, out);
+    }
     // (G4.1): Cp⁻¹ ← M Cp⁻¹ Mᵀ with M = to⁻¹ from, so that to Cp⁻¹ toᵀ = from Cp⁻¹ fromᵀ; the
     // zz component (plane strain: F_zz = 1 on both sides) and α are unchanged.
     void rebaseHistory(double* packed, const Mat<D>& from, const Mat<D>& to) const override

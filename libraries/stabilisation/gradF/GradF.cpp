@@ -281,6 +281,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
     const std::vector<ParticleChunk>& chunks = chunkCache_.of(in.bodies);
     const bool carriesK = !ref.K.empty();
     samples_.follow(list, in.body, in.materials, in.globalId, elasticState_ ? &ref.F : nullptr);
+    samples_.clearPending(); // this evaluation's states are the ones to commit
     sampleDissipation_.resize(n);
     std::vector<ChunkTally> tallies(chunks.size());
 #pragma omp parallel if (useThreads(n))

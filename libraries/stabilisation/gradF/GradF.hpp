@@ -102,6 +102,8 @@ public:
         std::vector<double> psi;
         std::vector<double> dissipation; // per unit initial volume, by a commit at F_b(a)
         std::vector<double> omega;       // energy weights chosen at a move (§G9)
+        std::vector<double> states;      // the samples' committed states, unpacked (§P7)
+        std::vector<double> nextStates;  // and the states a commit would make of them
         void resize(std::size_t n)
         {
             omega.resize(n);
@@ -160,9 +162,10 @@ private:
     ForceStatus sampleInversion_;
     SampleHistory<D> samples_;
     std::vector<double> sampleDissipation_;
-    // Where the samples around particle a find their history (a's slots of the list).
+    // Where the samples around particle a find their history: their states read into
+    // scratch (and, with pending, where the evaluation puts the states to commit).
     HistoryOf historyAround(std::size_t a, const Material<D>& material,
-                            const NeighbourList& list, Scratch* scratch);
+                            const NeighbourList& list, Scratch& scratch, bool pending);
     // P(F_b(a)) (and Ψ when psi is not null) of particle a's count samples in scratch.F; with
     // pending, also the states a commit would make of them (a force evaluation).
     void evaluateSamples(std::size_t a, const Material<D>& material, const NeighbourList& list,

@@ -37,6 +37,7 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
     // (§G3: none unless the step was unstable). be = F Cp⁻¹ Fᵀ is positive definite for det F < 0
     // too, so an inverted sample would carry on as its mirror image: the move refuses it instead.
     std::vector<double> inverted(n, 1.0);
+    samples_.storeEveryState(body, materials); // none stays the initial one
 #pragma omp parallel if (useThreads(n))
     {
         Scratch scratch;
@@ -62,7 +63,7 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
                 {
                     inverted[a] = ratio;
                 }
-                material.rebaseHistory(samples_.committedForMove(first + j), Fb, frame);
+                samples_.rebase(first + j, material, Fb, frame);
             }
             material.rebaseParticleHistory(a, kin.F, frame);
         }

@@ -16,7 +16,12 @@ void GradF<D>::evaluateSamples(std::size_t a, const Material<D>& material, const
     if (!(linearised_ && material.hasHistory()))
     {
         material.evaluate(scratch.F.data(), scratch.P.data(), psi, count,
-                          historyAround(a, material, list, pending ? &scratch : nullptr));
+                          historyAround(a, material, list, scratch, pending));
+        if (pending && material.hasHistory())
+        {
+            samples_.keepPending(list.begin(a), count, scratch.states.data(),
+                                 scratch.nextStates.data());
+        }
         return;
     }
     // Evaluation 2: P_tr(F_b) + dP_a + A_a : (F_b − F_a), W_tr(F_b) + dW_a + dP_a : (F_b − F_a).
@@ -47,7 +52,7 @@ void GradF<D>::evaluateSamples(std::size_t a, const Material<D>& material, const
 
 template <int D>
 HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
-                                  const NeighbourList& list, Scratch* scratch)
+                                  const NeighbourList& list, Scratch& scratch, bool pending)
 {
     if (!material.hasHistory())
     {
@@ -58,10 +63,16 @@ HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
         throw std::logic_error("gradF: a material with history, but declareHistory() was not "
                                "called");
     }
-    const std::size_t k = list.begin(a);
-    return scratch ? HistoryOf::samples(samples_.committed(k), samples_.stride(),
-                                        samples_.next(k), scratch->dissipation.data())
-                   : HistoryOf::samples(samples_.committed(k), samples_.stride());
+    const std::size_t stride = samples_.stride();
+    scratch.states.resize(list.count(a) * stride);
+    samples_.read(list.begin(a), list.count(a), scratch.states.data());
+    if (!pending)
+    {
+        return HistoryOf::samples(scratch.states.data(), stride);
+    }
+    scratch.nextStates.resize(scratch.states.size());
+    return HistoryOf::samples(scratch.states.data(), stride, scratch.nextStates.data(),
+                              scratch.dissipation.data());
 }
 
 // The particles' own states (each = its sample a–a: F_a(a) = F_a) for display and as the
@@ -96,17 +107,17 @@ double GradF<D>::commitHistory(const HistoryCommit<D>& in)
 template void GradF<1>::evaluateSamples(std::size_t, const Material<1>&, const NeighbourList&,
                                          std::size_t, double*, Scratch&, bool);
 template HistoryOf GradF<1>::historyAround(std::size_t, const Material<1>&, const NeighbourList&,
-                                          Scratch*);
+                                          Scratch&, bool);
 template double GradF<1>::commitHistory(const HistoryCommit<1>&);
 template void GradF<2>::evaluateSamples(std::size_t, const Material<2>&, const NeighbourList&,
                                          std::size_t, double*, Scratch&, bool);
 template HistoryOf GradF<2>::historyAround(std::size_t, const Material<2>&, const NeighbourList&,
-                                          Scratch*);
+                                          Scratch&, bool);
 template double GradF<2>::commitHistory(const HistoryCommit<2>&);
 template void GradF<3>::evaluateSamples(std::size_t, const Material<3>&, const NeighbourList&,
                                          std::size_t, double*, Scratch&, bool);
 template HistoryOf GradF<3>::historyAround(std::size_t, const Material<3>&, const NeighbourList&,
-                                          Scratch*);
+                                          Scratch&, bool);
 template double GradF<3>::commitHistory(const HistoryCommit<3>&);
 
 } // namespace sph

@@ -4,18 +4,22 @@
 // a–b keeps its own committed state, as a finite element's quadrature point does, so that the
 // commit lowers the scheme's energy by exactly the sampled dissipation.
 //
-// The states lie along the reference neighbour list (slot k of the list holds the sample of
-// the pair it names), packed as the material packs them (Material::packHistory), each with the
-// global index of the neighbour it samples. A commit takes the states the last force
-// evaluation computed (`next`). When the list changes (the updated-Lagrangian reference is
-// rebuilt, or a distributed run's local particles change), follow() moves each state to the
-// pair's new slot by the neighbour's global index; a pair that is new starts from its owner's
-// committed particle state (= its own sample a–a).
+// The samples lie along the reference neighbour list (slot k of the list is the sample of the
+// pair it names), each with the global index of the neighbour it samples. A sample in the
+// material's initial state (one that never flowed: most of a body, most of the time) stores
+// nothing; the others keep their state in a pool (StatePool), in the material's compact form
+// (Material::compactHistory: Cp⁻¹ is symmetric), slot k naming its record. An evaluation reads
+// a particle's states unpacked (read()) and hands back the states a commit would make of them
+// (keepPending()): only those that differ from the committed ones are kept, and the commit
+// writes them in place. When the list changes (the updated-Lagrangian reference is rebuilt,
+// or a distributed run's local particles change), follow() moves each state to the pair's new
+// slot by the neighbour's global index; a pair that is new starts from its owner's committed
+// particle state (= its own sample a–a).
 //
 // To the field registry the states are a ragged particle field (particles/RaggedArray.hpp):
-// particle a's entries are its samples, each [neighbour's global index, state]. So they move
-// with their particle between ranks (a ghost gets its owner's states when it is gathered, and
-// commits them itself, as it does its particle history), and they are restart data; a
+// particle a's entries are its samples, each [neighbour's global index, packed state]. So they
+// move with their particle between ranks (a ghost gets its owner's states when it is gathered,
+// and commits them itself, as it does its particle history), and they are restart data; a
 // restart, or an exchange, leaves them in particle order, and follow() lays them out along the
 // list again.
 //
@@ -29,8 +33,14 @@
 #include "particles/NeighbourList.hpp"
 #include "particles/Parallel.hpp"
 #include "particles/ParticleFields.hpp"
+#include "stabilisation/gradF/StatePool.hpp"
+
+#include <omp.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -41,14 +51,34 @@ template <int D>
 class SampleHistory final : public RaggedArray
 {
 public:
-    // Active when some material has history: numbers per state = the largest of them.
+    // Active when some material has history. The materials with history share one packed
+    // layout (every plastic material: PlasticState), which the restart field is written in.
     void declare(const std::vector<const Material<D>*>& materials, ParticleFields<D>& fields,
                  bool weighted = false)
     {
         weighted_ = weighted;
         for (const Material<D>* material : materials)
         {
-            stride_ = std::max(stride_, material->historyComponents());
+            if (material->historyComponents() == 0)
+            {
+                continue;
+            }
+            if (codec_ && (material->historyComponents() != stride_ ||
+                           material->compactHistoryComponents() != pool_.width()))
+            {
+                throw std::logic_error("SampleHistory: materials with histories of different "
+                                       "layouts");
+            }
+            codec_ = material;
+            stride_ = material->historyComponents();
+            if (stride_ > maxStride)
+            {
+                throw std::logic_error("SampleHistory: a history of more than " +
+                                       std::to_string(maxStride) + " numbers");
+            }
+            pool_.reset(material->compactHistoryComponents());
+            initial_.resize(stride_);
+            material->packInitialHistory(initial_.data());
         }
         if (stride_ > 0)
         {
@@ -85,43 +115,45 @@ public:
                                    " particles, the list of " + std::to_string(n));
         }
         const auto global = [globalId](std::size_t b) {
-            return globalId ? static_cast<double>((*globalId)[b]) : static_cast<double>(b);
+            return globalId ? (*globalId)[b] : static_cast<int>(b);
         };
-        // Into a buffer kept between moves (no allocation, no page faults once grown: the
-        // reference moves every step). Slots of bodies without history are never read.
-        resizePairArray(remapped_, list.pairCount() * stride_);
+        // The new slots name the records of the kept pairs (whose old slots are marked
+        // `moved`), or say where a new pair's state comes from. Into a buffer kept between
+        // moves (no allocation once grown: the reference moves every step).
+        resizePairArray(remapped_, list.pairCount());
         if (weighted_)
         {
             remappedWeights_.resize(list.pairCount());
-            keptOld_.assign(neighbours_.size(), 0);
         }
+        std::vector<std::uint8_t> hasNew(n, 0);
 #pragma omp parallel if (useThreads(n))
         {
-            std::vector<double> owner(stride_, 0.0);
-            std::vector<double> neighbour(stride_, 0.0);
+            std::array<double, maxStride> owner{};
 #pragma omp for schedule(static)
             for (std::size_t a = 0; a < n; ++a)
             {
                 const Material<D>* material = materials[static_cast<std::size_t>(body[a])];
                 if (material->historyComponents() == 0)
                 {
+                    std::fill(&remapped_[list.begin(a)], &remapped_[list.begin(a)] + list.count(a),
+                              StatePool::none); // never read
                     continue;
                 }
                 material->packHistory(a, owner.data());
+                const bool ownerInitial = isInitial(owner.data());
                 std::size_t old = offsets_[a];
                 const std::size_t oldEnd = offsets_[a + 1];
                 for (std::size_t k = list.begin(a); k < list.end(a); ++k)
                 {
                     // Both: a itself first, then its neighbours in increasing global index
                     // (local particles are in increasing global index).
-                    const double b = global(list.indices[k]);
+                    const int b = global(list.indices[k]);
                     const bool self = k == list.begin(a);
                     while (!self && old < oldEnd && (old == offsets_[a] || neighbours_[old] < b))
                     {
                         ++old;
                     }
                     const bool kept = old < oldEnd && neighbours_[old] == b;
-                    const double* from = kept ? &states_[old * stride_] : owner.data();
                     const std::size_t local = list.indices[k];
                     if (weighted_)
                     {
@@ -129,21 +161,25 @@ public:
                         remappedWeights_[k] = kept          ? weights_[old]
                                               : firstLayout ? std::numeric_limits<double>::quiet_NaN()
                                                             : 0.0;
-                        if (kept)
-                        {
-                            keptOld_[old] = 1;
-                        }
+                    }
+                    if (kept)
+                    {
+                        remapped_[k] = slot_[old];
+                        slot_[old] = moved;
                     }
                     // (A particle with no states yet is being laid out for the first time:
                     // its samples start virgin, as its own state does.)
-                    if (!kept && !self && Fr && oldEnd > offsets_[a] &&
-                        materials[static_cast<std::size_t>(body[local])] == material)
+                    else if (!self && Fr && oldEnd > offsets_[a] &&
+                             materials[static_cast<std::size_t>(body[local])] == material)
                     {
-                        material->packHistory(local, neighbour.data());
-                        material->rebaseHistory(neighbour.data(), (*Fr)[local], (*Fr)[a]);
-                        from = neighbour.data();
+                        remapped_[k] = fromNeighbour;
+                        hasNew[a] = 1;
                     }
-                    std::copy(from, from + stride_, &remapped_[k * stride_]);
+                    else
+                    {
+                        remapped_[k] = ownerInitial ? StatePool::none : fromOwner;
+                        hasNew[a] = !ownerInitial || hasNew[a];
+                    }
                 }
             }
         }
@@ -152,23 +188,120 @@ public:
             setAsideLeaving(body, materials);
             weights_.swap(remappedWeights_);
         }
-        states_.swap(remapped_);
-        resizePairArray(next_, states_.size()); // every slot of a history body is written before a commit
+        for (const StatePool::Index leaving : slot_)
+        {
+            if (isRecord(leaving))
+            {
+                pool_.release(leaving);
+            }
+        }
+        slot_.swap(remapped_);
         offsets_.assign(list.offsets.begin(), list.offsets.end());
-        neighbours_.resize(list.indices.size());
+        resizePairArray(neighbours_, list.indices.size());
         for (std::size_t k = 0; k < neighbours_.size(); ++k)
         {
             neighbours_[k] = global(list.indices[k]);
         }
+        storeNewStates(list, body, materials, hasNew, Fr);
+        clearPending();
         current_ = true;
     }
 
-    // The committed states of the samples in slots k, k+1, ... and where the evaluation puts
-    // the states a commit would make of them.
-    const double* committed(std::size_t k) const { return &states_[k * stride_]; }
-    double* next(std::size_t k) { return &next_[k * stride_]; }
-    // The committed state in slot k, to be re-expressed when the reference moves (§G4).
-    double* committedForMove(std::size_t k) { return &states_[k * stride_]; }
+    // The committed states of the samples in slots first .. first + count, unpacked into
+    // `out` (stride() numbers each).
+    void read(std::size_t first, std::size_t count, double* out) const
+    {
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            readSlot(first + j, out + j * stride_);
+        }
+    }
+    // What an evaluation found a commit would make of those states (`next`, laid out as
+    // read() gives them in `committed`): the states that differ are kept for the commit. The
+    // last evaluation's are the ones committed; clearPending() before it starts.
+    void keepPending(std::size_t first, std::size_t count, const double* committed,
+                     const double* next)
+    {
+        const auto thread = static_cast<std::size_t>(omp_get_thread_num());
+        if (thread >= pending_.size())
+        {
+            throw std::logic_error("SampleHistory: keepPending() before clearPending()");
+        }
+        Pending& mine = pending_[thread];
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            const double* state = next + j * stride_;
+            if (!sameBits(state, committed + j * stride_))
+            {
+                resizePairArray(mine.slots, mine.slots.size() + 1);
+                mine.slots.back() = static_cast<std::uint32_t>(first + j); // as NeighbourList's
+                resizePairArray(mine.states, mine.states.size() + pool_.width());
+                compact(state, &mine.states[mine.states.size() - pool_.width()]);
+            }
+        }
+    }
+    // A force evaluation starts: what the last one kept is no longer the state to commit.
+    void clearPending()
+    {
+        pending_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
+        for (Pending& p : pending_)
+        {
+            p.slots.clear();
+            p.states.clear();
+        }
+    }
+    // The states of the last evaluation become the committed ones, in place.
+    void commit()
+    {
+        for (Pending& p : pending_)
+        {
+            for (std::size_t i = 0; i < p.slots.size(); ++i)
+            {
+                StatePool::Index& record = slot_[p.slots[i]];
+                if (record == StatePool::none)
+                {
+                    record = pool_.allocate();
+                }
+                const double* state = &p.states[i * pool_.width()];
+                std::copy(state, state + pool_.width(), pool_.at(record));
+            }
+        }
+        clearPending();
+    }
+
+    // Every sample of a particle with history gets a record of its own (a move of the
+    // reference is about to re-express them all in place: rebase()).
+    void storeEveryState(const std::vector<int>& body, const std::vector<Material<D>*>& materials)
+    {
+        for (std::size_t a = 0; a + 1 < offsets_.size(); ++a)
+        {
+            if (materials[static_cast<std::size_t>(body[a])]->historyComponents() == 0)
+            {
+                continue;
+            }
+            for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k)
+            {
+                if (slot_[k] == StatePool::none)
+                {
+                    slot_[k] = pool_.allocate();
+                    compact(initial_.data(), pool_.at(slot_[k]));
+                }
+            }
+        }
+    }
+    // The committed state in slot k re-expressed when the reference moves (§G4): its be at
+    // `to` is the one it had at `from` (after storeEveryState()).
+    void rebase(std::size_t k, const Material<D>& material, const Mat<D>& from, const Mat<D>& to)
+    {
+        if (!isRecord(slot_[k]))
+        {
+            throw std::logic_error("SampleHistory: rebase() of a state without a record");
+        }
+        std::array<double, maxStride> state{};
+        readSlot(k, state.data());
+        material.rebaseHistory(state.data(), from, to);
+        compact(state.data(), pool_.at(slot_[k]));
+    }
 
     // Energy weights (weighted() only): of slot k; and the samples particle a lost at the last
     // follow(): count, their weights and their states (stride() numbers each).
@@ -185,10 +318,10 @@ public:
     // The evaluation after the move has used them.
     void clearLeaving() { leavingOffsets_.clear(); }
 
-    // The states of the last evaluation become the committed ones.
-    void commit() { states_.swap(next_); }
+    // The samples that keep a record (the rest are in the initial state).
+    std::size_t storedStates() const { return pool_.held(); }
 
-    // The ragged field: particle a's samples, each [neighbour's global index, state].
+    // The ragged field: particle a's samples, each [neighbour's global index, packed state].
     const std::string& name() const override { return name_; }
     std::size_t width() const override { return 1 + stride_ + (weighted_ ? 1 : 0); }
     std::size_t size() const override { return offsets_.empty() ? 0 : offsets_.size() - 1; }
@@ -198,7 +331,8 @@ public:
         for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k)
         {
             *out++ = neighbours_[k];
-            out = std::copy(&states_[k * stride_], &states_[(k + 1) * stride_], out);
+            readSlot(k, out);
+            out += stride_;
             if (weighted_)
             {
                 *out++ = weights_[k];
@@ -218,25 +352,111 @@ public:
             throw std::logic_error("SampleHistory: " + std::to_string(values.size()) +
                                    " numbers for " + std::to_string(pairs) + " samples");
         }
-        neighbours_.resize(pairs);
-        states_.resize(pairs * stride_);
+        pool_.reset(pool_.width());
+        neighbours_.assign(pairs, 0);
+        slot_.assign(pairs, StatePool::none);
         weights_.resize(weighted_ ? pairs : 0);
         for (std::size_t k = 0; k < pairs; ++k)
         {
             const double* in = &values[k * width()];
-            neighbours_[k] = in[0];
-            std::copy(in + 1, in + 1 + stride_, &states_[k * stride_]);
+            if (!(in[0] >= 0.0 && in[0] <= std::numeric_limits<int>::max() &&
+                  in[0] == std::floor(in[0])))
+            {
+                throw std::runtime_error("sampleHistory: a neighbour index " + std::to_string(in[0]) +
+                                         " that is not a particle's");
+            }
+            neighbours_[k] = static_cast<int>(in[0]);
+            if (!isInitial(in + 1))
+            {
+                slot_[k] = pool_.allocate();
+                compact(in + 1, pool_.at(slot_[k]));
+            }
             if (weighted_)
             {
                 weights_[k] = in[1 + stride_];
             }
         }
+        clearPending();
         current_ = false;
     }
 
 private:
-    // The old slots follow() did not keep, of particles with history that had samples: their
-    // weights and states, by particle (before the old layout is dropped).
+    static constexpr std::size_t maxStride = 16;
+    // Slot markers of follow() (above any record StatePool hands out): a kept pair's old slot;
+    // a new pair that starts from its neighbour's state, or from its owner's.
+    static constexpr StatePool::Index moved = StatePool::none - 1;
+    static constexpr StatePool::Index fromNeighbour = StatePool::none - 2;
+    static constexpr StatePool::Index fromOwner = StatePool::none - 3;
+    static bool isRecord(StatePool::Index slot) { return slot < fromOwner; }
+
+    static bool sameBits(const double* x, const double* y, std::size_t n)
+    {
+        return std::memcmp(x, y, n * sizeof(double)) == 0;
+    }
+    bool sameBits(const double* x, const double* y) const { return sameBits(x, y, stride_); }
+    bool isInitial(const double* state) const { return sameBits(state, initial_.data()); }
+    void readSlot(std::size_t k, double* out) const
+    {
+        if (slot_[k] == StatePool::none)
+        {
+            std::copy(initial_.begin(), initial_.end(), out);
+        }
+        else
+        {
+            codec_->expandHistory(pool_.at(slot_[k]), out);
+        }
+    }
+    // The compact form of a packed state, which must unpack to it bit for bit.
+    void compact(const double* state, double* out) const
+    {
+        if (!codec_->compactHistory(state, out))
+        {
+            throw std::runtime_error("sampleHistory: a state the material cannot keep exactly "
+                                     "(its Cp^-1 is not symmetric: not written by sphSolid)");
+        }
+    }
+
+    // follow()'s new pairs that start from a state of their own, in slot order.
+    void storeNewStates(const NeighbourList& list, const std::vector<int>& body,
+                        const std::vector<const Material<D>*>& materials,
+                        const std::vector<std::uint8_t>& hasNew, const std::vector<Mat<D>>* Fr)
+    {
+        std::array<double, maxStride> state{};
+        for (std::size_t a = 0; a < hasNew.size(); ++a)
+        {
+            if (!hasNew[a])
+            {
+                continue;
+            }
+            const Material<D>* material = materials[static_cast<std::size_t>(body[a])];
+            for (std::size_t k = list.begin(a); k < list.end(a); ++k)
+            {
+                if (slot_[k] == fromOwner)
+                {
+                    material->packHistory(a, state.data());
+                }
+                else if (slot_[k] == fromNeighbour)
+                {
+                    const std::size_t local = list.indices[k];
+                    material->packHistory(local, state.data());
+                    material->rebaseHistory(state.data(), (*Fr)[local], (*Fr)[a]);
+                }
+                else
+                {
+                    continue;
+                }
+                slot_[k] = StatePool::none;
+                if (!isInitial(state.data()))
+                {
+                    slot_[k] = pool_.allocate();
+                    compact(state.data(), pool_.at(slot_[k]));
+                }
+            }
+        }
+    }
+
+    // The old slots follow() did not keep (not `moved`), of particles with history that had
+    // samples: their weights and states, by particle (before the old layout is dropped).
     void setAsideLeaving(const std::vector<int>& body, const std::vector<const Material<D>*>& materials)
     {
         const std::size_t n = offsets_.size() - 1;
@@ -249,11 +469,11 @@ private:
             {
                 for (std::size_t old = offsets_[a]; old < offsets_[a + 1]; ++old)
                 {
-                    if (!keptOld_[old])
+                    if (slot_[old] != moved)
                     {
                         leavingWeights_.push_back(weights_[old]);
-                        leavingStates_.insert(leavingStates_.end(), &states_[old * stride_],
-                                              &states_[(old + 1) * stride_]);
+                        leavingStates_.resize(leavingStates_.size() + stride_);
+                        readSlot(old, &leavingStates_[leavingStates_.size() - stride_]);
                     }
                 }
             }
@@ -261,23 +481,32 @@ private:
         }
     }
 
+    // The states one thread's evaluations found to commit: slots, and compact states.
+    struct Pending
+    {
+        std::vector<std::uint32_t> slots;
+        std::vector<double> states;
+    };
+
     std::string name_ = "sampleHistory";
     bool weighted_ = false;
     std::vector<double> weights_;
     std::vector<double> remappedWeights_;
-    std::vector<char> keptOld_;
     std::vector<std::size_t> leavingOffsets_;
     std::vector<double> leavingWeights_;
     std::vector<double> leavingStates_;
     std::size_t stride_ = 0;
+    const Material<D>* codec_ = nullptr; // packs and unpacks the states of every material
+    std::vector<double> initial_;        // the initial state, packed
     bool current_ = false;
-    std::vector<double> states_;
-    std::vector<double> next_;
-    std::vector<double> remapped_; // follow()'s buffer
+    StatePool pool_;
+    std::vector<Pending> pending_;
     // The samples of particle a are slots offsets_[a] .. offsets_[a + 1]: a itself first, then
-    // its neighbours, by global index (a double: exact below 2^53).
+    // its neighbours, by global index. Slot k's record, or none (the initial state).
     std::vector<std::size_t> offsets_;
-    std::vector<double> neighbours_;
+    std::vector<int> neighbours_;
+    std::vector<StatePool::Index> slot_;
+    std::vector<StatePool::Index> remapped_; // follow()'s buffer
 };
 
 } // namespace sph

@@ -1,0 +1,406 @@
+// The storage of gradF's per-sample history (SampleHistory, issue 30), against the dense
+// layout it replaced (a committed and a next state per pair, the commit a copy):
+//   - a sample in the initial state keeps no record and reads as that state;
+//   - the commit, in place and of the states that changed only, leaves the states the copy of
+//     the last evaluation's left (an earlier evaluation's are dropped);
+//   - when the list changes, a kept pair keeps its state, a new one starts from its owner's,
+//     and the records of the pairs that left are reused;
+//   - the restart field (get/assign) round-trips bit for bit, in the full packed layout;
+//   - a plastic state's compact form (Cp⁻¹'s upper triangle) unpacks bit for bit, and a state
+//     whose Cp⁻¹ is not symmetric bit for bit is refused, not rounded;
+//   - StatePool's records keep their address and contents as it grows, released ones are reused.
+#include "materials/plasticity/PlasticHistory.hpp"
+#include "numerics/NumericsSupport.hpp"
+#include "stabilisation/gradF/SampleHistory.hpp"
+
+#include <cstring>
+#include <map>
+#include <random>
+
+using namespace sph;
+
+namespace
+{
+
+const char* kJ2 = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 0.5; hardeningModulus 0.2;";
+
+bool sameBits(const double* x, const double* y, std::size_t n)
+{
+    return std::memcmp(x, y, n * sizeof(double)) == 0;
+}
+
+// A packed plastic state with a random symmetric Cp⁻¹ and α > 0.
+template <int D>
+std::vector<double> randomState(std::mt19937& random)
+{
+    std::uniform_real_distribution<double> uniform(-0.2, 0.2);
+    PlasticState<D> s;
+    for (int i = 0; i < D; ++i)
+    {
+        for (int j = i; j < D; ++j)
+        {
+            s.inversePlastic(i, j) = (i == j ? 1.0 : 0.0) + uniform(random);
+            s.inversePlastic(j, i) = s.inversePlastic(i, j);
+        }
+    }
+    s.inversePlasticZZ = 1.0 + uniform(random);
+    s.alpha = 0.3 + uniform(random);
+    std::vector<double> packed(PlasticState<D>::packedSize);
+    s.pack(packed.data());
+    return packed;
+}
+
+// A body of lattice points with j2Plasticity and its neighbour list; the samples laid out.
+template <int D>
+struct Samples
+{
+    ParticleFields<D> fields;
+    std::unique_ptr<Material<D>> material;
+    std::vector<const Material<D>*> materials;
+    std::vector<int> body;
+    std::vector<Vec<D>> x;
+    NeighbourList list;
+    SampleHistory<D> history;
+    std::size_t stride = 0;
+
+    explicit Samples(unsigned seed)
+    {
+        x = test::lattice<D>(D == 3 ? 4 : 6, 0.2, seed);
+        body.assign(x.size(), 0);
+        fields.setSize(x.size());
+        material = test::build<Material<D>>(kJ2, {&fields, BodyRange{"body", 0, x.size()}, nullptr}, D);
+        materials = {material.get()};
+        history.declare(materials, fields);
+        stride = history.stride();
+        relist(x);
+    }
+    void relist(const std::vector<Vec<D>>& at)
+    {
+        list = buildNeighbourList<D>(at, body, 1.6);
+        history.listChanged();
+        history.follow(list, body, materials, nullptr);
+    }
+    std::vector<double> read(std::size_t a) const
+    {
+        std::vector<double> states(list.count(a) * stride);
+        history.read(list.begin(a), list.count(a), states.data());
+        return states;
+    }
+    std::vector<double> initial() const
+    {
+        std::vector<double> state(stride);
+        PlasticState<D>{}.pack(state.data());
+        return state;
+    }
+};
+
+// One evaluation's `next` states: every third sample (shifted by round) gets a new state, the
+// rest are the committed ones copied, as ReturnMapPlasticity::evaluate writes them.
+template <int D>
+std::vector<std::vector<double>> evaluate(Samples<D>& s, int round, std::mt19937& random)
+{
+    s.history.clearPending();
+    std::vector<std::vector<double>> next(s.x.size());
+    for (std::size_t a = 0; a < s.x.size(); ++a)
+    {
+        const std::vector<double> committed = s.read(a);
+        next[a] = committed;
+        for (std::size_t j = 0; j < s.list.count(a); ++j)
+        {
+            if ((j + static_cast<std::size_t>(round)) % 3 == 0)
+            {
+                const std::vector<double> state = randomState<D>(random);
+                std::copy(state.begin(), state.end(), &next[a][j * s.stride]);
+            }
+        }
+        s.history.keepPending(s.list.begin(a), s.list.count(a), committed.data(), next[a].data());
+    }
+    return next;
+}
+
+template <int D>
+std::size_t countNotInitial(const Samples<D>& s)
+{
+    const std::vector<double> initial = s.initial();
+    std::size_t count = 0;
+    for (std::size_t a = 0; a < s.x.size(); ++a)
+    {
+        const std::vector<double> states = s.read(a);
+        for (std::size_t j = 0; j < s.list.count(a); ++j)
+        {
+            count += sameBits(&states[j * s.stride], initial.data(), s.stride) ? 0 : 1;
+        }
+    }
+    return count;
+}
+
+template <int D>
+void initialSamplesKeepNoRecord()
+{
+    INFO(D << "D");
+    Samples<D> s(3);
+    REQUIRE(s.list.pairCount() > 5 * s.x.size());
+    CHECK(s.history.storedStates() == 0);
+    const std::vector<double> initial = s.initial();
+    for (std::size_t a = 0; a < s.x.size(); ++a)
+    {
+        const std::vector<double> states = s.read(a);
+        for (std::size_t j = 0; j < s.list.count(a); ++j)
+        {
+            REQUIRE(sameBits(&states[j * s.stride], initial.data(), s.stride));
+        }
+        // The restart entry: [neighbour, state] each.
+        std::vector<double> entries(s.history.entries(a) * s.history.width());
+        s.history.get(a, entries.data());
+        for (std::size_t j = 0; j < s.list.count(a); ++j)
+        {
+            CHECK(entries[j * s.history.width()] == static_cast<double>(s.list.indices[s.list.begin(a) + j]));
+            CHECK(sameBits(&entries[j * s.history.width() + 1], initial.data(), s.stride));
+        }
+    }
+}
+
+template <int D>
+void commitInPlaceIsTheCopy()
+{
+    INFO(D << "D");
+    Samples<D> s(5);
+    std::mt19937 random(11);
+    for (int round = 0; round < 3; ++round)
+    {
+        // An earlier evaluation's states are not committed: only the last one's.
+        evaluate<D>(s, round + 1, random);
+        const std::vector<std::vector<double>> next = evaluate<D>(s, round, random);
+        std::vector<std::vector<double>> before(s.x.size());
+        for (std::size_t a = 0; a < s.x.size(); ++a)
+        {
+            before[a] = s.read(a);
+        }
+        // Pending states are not the committed ones until the commit.
+        for (std::size_t a = 0; a < s.x.size(); ++a)
+        {
+            REQUIRE(s.read(a) == before[a]);
+        }
+        s.history.commit();
+        for (std::size_t a = 0; a < s.x.size(); ++a)
+        {
+            const std::vector<double> after = s.read(a);
+            REQUIRE(sameBits(after.data(), next[a].data(), after.size()));
+        }
+        CHECK(s.history.storedStates() == countNotInitial(s));
+        if (round == 0)
+        {
+            CHECK(s.history.storedStates() < s.list.pairCount() / 2); // a third of them changed
+        }
+    }
+    // A commit without a new evaluation changes nothing (what was pending was committed).
+    std::vector<std::vector<double>> committed(s.x.size());
+    for (std::size_t a = 0; a < s.x.size(); ++a)
+    {
+        committed[a] = s.read(a);
+    }
+    s.history.commit();
+    for (std::size_t a = 0; a < s.x.size(); ++a)
+    {
+        CHECK(s.read(a) == committed[a]);
+    }
+}
+
+template <int D>
+void followKeepsAndStartsStates()
+{
+    INFO(D << "D");
+    Samples<D> s(7);
+    std::mt19937 random(13);
+    evaluate<D>(s, 0, random);
+    s.history.commit();
+    // Particle 1's own state is not the initial one: its new pairs start from it.
+    REQUIRE(s.material->startFromStress(1, 0.01 * Eigen::Matrix3d::Identity()) ==
+            Material<D>::InitialStress::set);
+    std::vector<double> owner1(s.stride);
+    s.material->packHistory(1, owner1.data());
+    REQUIRE(!sameBits(owner1.data(), s.initial().data(), s.stride));
+    std::vector<std::map<std::size_t, std::vector<double>>> old(s.x.size());
+    for (std::size_t a = 0; a < s.x.size(); ++a)
+    {
+        const std::vector<double> states = s.read(a);
+        for (std::size_t j = 0; j < s.list.count(a); ++j)
+        {
+            old[a][s.list.indices[s.list.begin(a) + j]] =
+                std::vector<double>(&states[j * s.stride], &states[(j + 1) * s.stride]);
+        }
+    }
+    std::vector<Vec<D>> moved = s.x;
+    std::mt19937 jitter(17);
+    std::uniform_real_distribution<double> uniform(-0.3, 0.3);
+    for (Vec<D>& p : moved)
+    {
+        for (int d = 0; d < D; ++d)
+        {
+            p[d] += uniform(jitter);
+        }
+    }
+    s.relist(moved);
+    std::size_t kept = 0;
+    std::size_t added = 0;
+    for (std::size_t a = 0; a < s.x.size(); ++a)
+    {
+        std::vector<double> own(s.stride);
+        s.material->packHistory(a, own.data());
+        const std::vector<double> states = s.read(a);
+        for (std::size_t j = 0; j < s.list.count(a); ++j)
+        {
+            const auto found = old[a].find(s.list.indices[s.list.begin(a) + j]);
+            const double* state = &states[j * s.stride];
+            if (found != old[a].end())
+            {
+                ++kept;
+                REQUIRE(sameBits(state, found->second.data(), s.stride));
+            }
+            else
+            {
+                ++added;
+                REQUIRE(sameBits(state, own.data(), s.stride));
+            }
+        }
+    }
+    CHECK(kept > 0);
+    CHECK(added > 0);
+    // The records of the pairs that left were released (and reused).
+    CHECK(s.history.storedStates() == countNotInitial(s));
+}
+
+template <int D>
+void restartFieldRoundTrips()
+{
+    INFO(D << "D");
+    Samples<D> s(9);
+    std::mt19937 random(19);
+    evaluate<D>(s, 1, random);
+    s.history.commit();
+    std::vector<std::size_t> counts(s.x.size());
+    std::vector<double> values;
+    for (std::size_t a = 0; a < s.x.size(); ++a)
+    {
+        counts[a] = s.history.entries(a);
+        values.resize(values.size() + counts[a] * s.history.width());
+        s.history.get(a, values.data() + values.size() - counts[a] * s.history.width());
+    }
+    CHECK(s.history.width() == 1 + PlasticState<D>::packedSize);
+    Samples<D> t(9);
+    t.history.assign(counts, values);
+    CHECK(t.history.storedStates() == s.history.storedStates());
+    std::vector<double> again(values.size());
+    std::size_t at = 0;
+    for (std::size_t a = 0; a < s.x.size(); ++a)
+    {
+        t.history.get(a, again.data() + at);
+        at += counts[a] * t.history.width();
+    }
+    CHECK(sameBits(again.data(), values.data(), values.size()));
+    // Laid out along the same list again, the states are where they were.
+    t.history.follow(s.list, s.body, t.materials, nullptr);
+    for (std::size_t a = 0; a < s.x.size(); ++a)
+    {
+        REQUIRE(t.read(a) == s.read(a));
+    }
+    // A state whose Cp⁻¹ is not symmetric bit for bit cannot be kept exactly: refused.
+    values[1 + 1] = std::nextafter(values[1 + D], 2.0);
+    CHECK_THROWS_WITH(t.history.assign(counts, values), Catch::Contains("not symmetric"));
+}
+
+template <int D>
+void compactFormIsExact()
+{
+    INFO(D << "D");
+    CHECK(PlasticState<D>::compactSize == D * (D + 1) / 2 + (D == 2 ? 1 : 0) + 1);
+    std::mt19937 random(23);
+    std::vector<double> compact(PlasticState<D>::compactSize);
+    std::vector<double> back(PlasticState<D>::packedSize);
+    for (int i = 0; i < 100; ++i)
+    {
+        const std::vector<double> state = randomState<D>(random);
+        REQUIRE(PlasticState<D>::compact(state.data(), compact.data()));
+        PlasticState<D>::expand(compact.data(), back.data());
+        REQUIRE(sameBits(back.data(), state.data(), state.size()));
+    }
+    if constexpr (D > 1)
+    {
+        std::vector<double> state = randomState<D>(random);
+        state[1] = -0.0; // Cp⁻¹_01
+        state[D] = 0.0;  // Cp⁻¹_10: equal, not the same bits
+        CHECK_FALSE(PlasticState<D>::compact(state.data(), compact.data()));
+    }
+}
+
+} // namespace
+
+TEST_CASE("gradF samples in the initial state keep no record and read as that state",
+          "[samples][memory]")
+{
+    initialSamplesKeepNoRecord<2>();
+    initialSamplesKeepNoRecord<3>();
+}
+
+TEST_CASE("gradF samples: the commit in place leaves the states the copy did", "[samples][memory]")
+{
+    commitInPlaceIsTheCopy<1>();
+    commitInPlaceIsTheCopy<2>();
+    commitInPlaceIsTheCopy<3>();
+}
+
+TEST_CASE("gradF samples follow a changed list: kept pairs keep their state, new ones start from "
+          "their owner's",
+          "[samples][memory]")
+{
+    followKeepsAndStartsStates<2>();
+    followKeepsAndStartsStates<3>();
+}
+
+TEST_CASE("gradF samples: the restart field round-trips bit for bit in the packed layout",
+          "[samples][memory]")
+{
+    restartFieldRoundTrips<2>();
+    restartFieldRoundTrips<3>();
+}
+
+TEST_CASE("a plastic state's compact form unpacks bit for bit", "[samples][memory]")
+{
+    compactFormIsExact<1>();
+    compactFormIsExact<2>();
+    compactFormIsExact<3>();
+}
+
+TEST_CASE("StatePool: records keep address and contents as it grows, released ones are reused",
+          "[samples][memory]")
+{
+    StatePool pool;
+    pool.reset(3);
+    std::vector<StatePool::Index> records;
+    std::vector<const double*> addresses;
+    for (int i = 0; i < 10000; ++i) // more than two blocks
+    {
+        records.push_back(pool.allocate());
+        double* r = pool.at(records.back());
+        r[0] = i;
+        r[1] = -i;
+        r[2] = 0.5 * i;
+        addresses.push_back(r);
+    }
+    CHECK(pool.held() == 10000);
+    for (int i = 0; i < 10000; ++i)
+    {
+        const double* r = pool.at(records[static_cast<std::size_t>(i)]);
+        REQUIRE(r == addresses[static_cast<std::size_t>(i)]);
+        REQUIRE((r[0] == i && r[1] == -i && r[2] == 0.5 * i));
+    }
+    pool.release(records[17]);
+    pool.release(records[4242]);
+    CHECK(pool.held() == 9998);
+    const StatePool::Index again = pool.allocate();
+    CHECK((again == records[17] || again == records[4242]));
+    CHECK(pool.held() == 9999);
+    pool.reset(3);
+    CHECK(pool.held() == 0);
+    CHECK(pool.allocate() == 0);
+}
