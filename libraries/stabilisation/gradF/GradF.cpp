@@ -3,7 +3,9 @@
 #include "stabilisation/gradF/MonomialTensors.hpp"
 #include "stabilisation/gradF/RegularisedInverse.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace sph
@@ -38,7 +40,15 @@ Schema GradF<D>::schema()
                        "nonIncreasing (so that no move raises it); "
                        "docs/theory/gradF-plastic.md §G9")
                  .choices({"kernel", "conserving", "nonIncreasing"})
-                 .defaultValue("kernel"));
+                 .defaultValue("kernel"))
+        .add(Key::word("sampleVolume",
+                       "the volume change of the stress samples: own (each sample's det F_b(a), "
+                       "as the paper) or particle (every sample of a particle takes the "
+                       "particle's det F_a, the F-bar method: the samples' spread stays isochoric, "
+                       "so isochoric plastic flow does not lock; docs/theory/gradF-plastic.md "
+                       "§G13)")
+                 .choices({"own", "particle"})
+                 .defaultValue("own"));
 }
 
 template <int D>
@@ -47,7 +57,8 @@ GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
       elasticState_(params.word("plasticSamples") == "elasticState"),
       weights_(!elasticState_ || params.word("moveWeights") == "kernel" ? MoveWeights::kernel
                : params.word("moveWeights") == "conserving"                ? MoveWeights::conserving
-                                                                           : MoveWeights::nonIncreasing)
+                                                                           : MoveWeights::nonIncreasing),
+      particleVolume_(params.word("sampleVolume") == "particle")
 {
     // Only samples that carry their elastic state have weights to choose.
     if (!elasticState_ && params.given("moveWeights") && params.word("moveWeights") != "kernel")
@@ -206,6 +217,62 @@ Mat<D> GradF<D>::deformationGradient(std::size_t a, const std::vector<Vec<D>>& x
     return f * ref.F[a];
 }
 
+namespace
+{
+// x^(1/D) for x > 0.
+template <int D>
+double rootOf(double x)
+{
+    if constexpr (D == 1)
+    {
+        return x;
+    }
+    else if constexpr (D == 2)
+    {
+        return std::sqrt(x);
+    }
+    else
+    {
+        return std::cbrt(x);
+    }
+}
+} // namespace
+
+template <int D>
+double GradF<D>::fillSamples(const Kinematics& kin, std::size_t count, Scratch& scratch) const
+{
+    double smallest = std::numeric_limits<double>::infinity();
+    const double Ja = kin.F.determinant();
+    for (std::size_t j = 0; j < count; ++j)
+    {
+        scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
+        const double Jb = scratch.F[j].determinant();
+        smallest = std::min(smallest, Jb);
+        if (particleVolume_)
+        {
+            // An inverted sample has no F̄; it is reported and the run stops (§G13).
+            scratch.alpha[j] = Jb > 0.0 ? rootOf<D>(Ja / Jb) : 1.0;
+            scratch.F[j] *= scratch.alpha[j];
+        }
+    }
+    return smallest;
+}
+
+// ∂Ψ(F̄)/∂F_b = α (P̄ − p̃ F̄^{-T}) and ∂Ψ(F̄)/∂F_a = p̃ F_a^{-T}, p̃ = tr(P̄ F̄ᵀ)/D (§G13 (G13.3)).
+template <int D>
+double GradF<D>::chainParticleVolume(std::size_t count, Scratch& scratch) const
+{
+    double pressure = 0.0;
+    for (std::size_t j = 0; j < count; ++j)
+    {
+        const Mat<D>& Fbar = scratch.F[j];
+        const double p = (scratch.P[j].array() * Fbar.array()).sum() / D;
+        pressure += scratch.w[j] * p;
+        scratch.P[j] = scratch.alpha[j] * (scratch.P[j] - p * Fbar.inverse().transpose());
+    }
+    return pressure;
+}
+
 template <int D>
 ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
                                       const ReferenceConfiguration<D>& ref, std::vector<Mat<D>>& F,
@@ -308,11 +375,13 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                     kin.G = Tensor3<D>::zero();
                 }
                 out.F[a] = kin.F;
-                // Stresses at F_b(a) = F_a + G_a x^r_ba for every neighbour b (incl. a).
+                // Stresses at F_b(a) = F_a + G_a x^r_ba (or F̄_b(a)) for every neighbour b
+                // (incl. a).
                 const std::size_t count = list.count(a);
-                for (std::size_t j = 0; j < count; ++j)
+                const double smallestSample = fillSamples(kin, count, scratch);
+                if (particleVolume_ && !(smallestSample > 0.0) && in.counts(a))
                 {
-                    scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
+                    tally.flagJacobian(a, smallestSample);
                 }
                 const bool weighted = samples_.weighted() && material.hasHistory();
                 const bool choose = weighted && weightsDue_;
@@ -332,6 +401,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                     sampleDissipation_[a] = in.V0[a] * dissipation;
                 }
                 out.P[a] = scratch.P[0]; // b = a: F_a(a) = F_a
+                const double pressure = particleVolume_ ? chainParticleVolume(count, scratch) : 0.0;
                 // S_a = Σ Ŵ P_b,  Q_a[k] = Σ Ŵ x^r_ba,k P_b
                 Mat<D> S = Mat<D>::Zero();
                 Tensor3<D> Q = Tensor3<D>::zero();
@@ -353,6 +423,10 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 if (in.counts(a))
                 {
                     tally.energy += in.V0[a] * energy;
+                }
+                if (particleVolume_)
+                {
+                    S.noalias() += pressure * kin.F.inverse().transpose();
                 }
                 // A = S F^r^T + Q:K,  B[k] = Q[k] F^r^T,  C = B~ Z^{-1},  Ã = A - C Y
                 const Mat<D> FrT = ref.F[a].transpose();
@@ -424,10 +498,7 @@ double GradF<D>::energy(const ForceInput<D>& in)
             const Kinematics kin = kinematics(a, in.x, ref, false, scratch);
             double sum = 0.0;
             const std::size_t count = list.count(a);
-            for (std::size_t j = 0; j < count; ++j)
-            {
-                scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
-            }
+            fillSamples(kin, count, scratch);
             evaluateSamples(a, material, list, count, scratch.psi.data(), scratch, false);
             if (samples_.weighted() && material.hasHistory())
             {

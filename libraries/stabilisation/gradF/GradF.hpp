@@ -23,8 +23,15 @@
 //               each sample keeps its own state, rebased at every move so that its elastic be
 //               does not change (G4.1); a new pair starts from its neighbour's state. Total
 //               Lagrangian: identical to ownHistory.
+// Sample volume (docs/theory/gradF-plastic.md §G13):
+//   own       each sample's own det F_b(a) (the paper)
+//   particle  every sample of a takes a's volume: F̄_b(a) = (J_a / det F_b(a))^(1/D) F_b(a), the
+//             F-bar method; the spread of the samples is then isochoric and the force the exact
+//             −∂Π/∂x of the energy at F̄ (§G13: the deviatoric Kirchhoff stress of each sample
+//             through its own F_b, their mean pressure through F_a)
 // Keys:
 //   plasticSamples | ownHistory | linearised | elasticState | ownHistory
+//   sampleVolume   | own | particle                           | own
 
 #include "stabilisation/CsphOperators.hpp"
 #include "stabilisation/gradF/SampleHistory.hpp"
@@ -104,8 +111,10 @@ public:
         std::vector<double> omega;       // energy weights chosen at a move (§G9)
         std::vector<double> states;      // the samples' committed states, unpacked (§P7)
         std::vector<double> nextStates;  // and the states a commit would make of them
+        std::vector<double> alpha;       // sampleVolume particle: (J_a / det F_b(a))^(1/D)
         void resize(std::size_t n)
         {
+            alpha.resize(n);
             omega.resize(n);
             dissipation.resize(n);
             xr.resize(n);
@@ -121,7 +130,17 @@ public:
                           const ReferenceConfiguration<D>& ref, bool atReference,
                           Scratch& scratch) const;
 
+    // The count stress samples of particle a into scratch.F: F_b(a) = F_a + G_a x^r_ba, or,
+    // with sampleVolume particle, F̄_b(a) (scratch.alpha the factors). Returns the smallest
+    // det F_b(a) (positive unless a sample is inverted, §G13).
+    double fillSamples(const Kinematics& kin, std::size_t count, Scratch& scratch) const;
+
 private:
+    // sampleVolume particle: the samples' stresses P̄ at F̄_b(a) in scratch.P become the
+    // derivatives of Ψ(F̄_b(a)) with respect to F_b(a), α_b dev(τ̄_b) F̄_b^{-T}; returns the
+    // samples' weighted mean pressure Σ_b Ŵ_ab tr(τ̄_b) / D, which acts through F_a (§G13).
+    double chainParticleVolume(std::size_t count, Scratch& scratch) const;
+
     // The least-squares matrix's smallest eigenvalue, relative to its mean (regularisedInverse).
     static constexpr double smallestEigenvalue = 0.02;
 
@@ -152,6 +171,7 @@ private:
     };
     MoveWeights weights_ = MoveWeights::kernel;
     bool weightsDue_ = false;
+    bool particleVolume_ = false; // sampleVolume particle (§G13)
     // elasticState: the particles with history, whose K the move sets to zero and whose F^r
     // it sets to the dilation J^(1/D) I (§G4), marked by moveHistory() for the
     // referenceUpdate() that follows it.

@@ -33,7 +33,7 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
     }
     spatialFrame_.assign(n, 0);
     weightsDue_ = samples_.weighted(); // the evaluation after the move chooses them (§G9)
-    // det f_b(a) = det F_b(a) / det F_a^r of each particle's first inverted sample, 1 if none
+    // det f_b(a) = det F_b(a) / det F_a^r of each particle's most inverted sample, 1 if none
     // (§G3: none unless the step was unstable). be = F Cp⁻¹ Fᵀ is positive definite for det F < 0
     // too, so an inverted sample would carry on as its mirror image: the move refuses it instead.
     std::vector<double> inverted(n, 1.0);
@@ -55,15 +55,14 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
             const Mat<D> frame = std::pow(kin.F.determinant(), 1.0 / D) * Mat<D>::Identity();
             const std::size_t first = list.begin(a);
             const double Jr = ref.F[a].determinant();
+            const double smallest = fillSamples(kin, list.count(a), scratch) / Jr;
+            if (!(smallest > 0.0))
+            {
+                inverted[a] = smallest;
+            }
             for (std::size_t j = 0; j < list.count(a); ++j)
             {
-                const Mat<D> Fb = kin.F + kin.G.contract(scratch.xr[j]);
-                const double ratio = Fb.determinant() / Jr;
-                if (!(ratio > 0.0) && inverted[a] > 0.0)
-                {
-                    inverted[a] = ratio;
-                }
-                samples_.rebase(first + j, material, Fb, frame);
+                samples_.rebase(first + j, material, scratch.F[j], frame);
             }
             material.rebaseParticleHistory(a, kin.F, frame);
         }
