@@ -109,6 +109,10 @@ public:
         ParticleFields<D>* fields = nullptr;
         const std::vector<std::string>* wallNames = nullptr; // constant/walls, in order
         bool artificialViscosity = false; // a viscosity other than `none` is selected
+        // Whether every particle's F is the map from its initial position. Not so where gradF
+        // elasticState moves a plastic material's reference: its F is then a dilation frame
+        // carried with the samples' elastic state (docs/theory/gradF-plastic.md §G2, §G11).
+        bool totalDeformationGradient = true;
         // A distributed run's ranks (null: serial); filled in before the first step, so a
         // constructor may only keep the pointer.
         const ParticleRanks* ranks = nullptr;

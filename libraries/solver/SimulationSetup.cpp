@@ -254,6 +254,8 @@ void Simulation<D>::setupFunctionObjects()
         args.fields = &fields_;
         args.wallNames = &walls_->names();
         args.artificialViscosity = viscosity_->active();
+        args.totalDeformationGradient = !(formulation_->updatesReference() &&
+                                          scheme_->movesParticleHistory() && historyMaterials_);
         args.ranks = &ranks_;
         functionObjects_.push_back(selectModel<FunctionObject<D>>(
             entry.dict(), args, D, Selection::withBodies(bodyNames_)));

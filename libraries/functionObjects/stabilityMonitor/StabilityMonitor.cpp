@@ -18,6 +18,9 @@
 //   unstable   closest neighbours < 0.1 of the initial spacing or indicator > 1 (particles
 //              pair up or a zero-energy pattern is as large as the kernel)
 //   suspect    in between (large plastic flow legitimately brings neighbours closer: look)
+// Where F is not the total map (gradF elasticState moving a plastic material's reference keeps
+// F as a dilation frame, docs/theory/gradF-plastic.md §G11) the indicator measures the flow's
+// shear, not a pattern: it is still written, and the verdict is the closest pair's alone.
 // Keys: writeInterval (see FunctionObject.hpp).
 #include "functionObjects/FunctionObjectModel.hpp"
 
@@ -40,7 +43,8 @@ public:
     static Schema schema() { return FunctionObjectModel<D>::commonSchema(); }
 
     StabilityMonitor(const Params& params, const typename FunctionObject<D>::Args& args)
-        : FunctionObjectModel<D>(params, args), spacing_(initialSpacing(*args.initial))
+        : FunctionObjectModel<D>(params, args), spacing_(initialSpacing(*args.initial)),
+          indicatorApplies_(args.totalDeformationGradient)
     {
         this->setColumns(
             {"zeroEnergyIndicator", "worstParticle", "minJ", "maxJ", "minDistanceRatio"});
@@ -201,6 +205,16 @@ private:
         std::snprintf(indicator, sizeof indicator,
                       "largest zero-energy indicator %.3g (stable <= %.1f, unstable > %.1f)",
                       maxIndicator_, stableIndicator, unstableIndicator);
+        if (!indicatorApplies_)
+        {
+            const char* notApplicable = "zero-energy indicator not applicable (F is the dilation "
+                                        "frame of gradF elasticState, not the map from the "
+                                        "initial positions)";
+            const std::string word = minDistanceRatio_ < unstableDistance ? "unstable"
+                                     : minDistanceRatio_ < stableDistance ? "suspect"
+                                                                          : "stable";
+            return {word, std::string(distance) + "; " + notApplicable};
+        }
         if (minDistanceRatio_ < unstableDistance)
         {
             return {"unstable", distance};
@@ -230,6 +244,7 @@ private:
     }
 
     double spacing_;
+    bool indicatorApplies_; // F is the total map (else the verdict is the closest pair's)
     double first_ = 0.0;
     bool haveFirst_ = false;
     double last_ = 0.0;
