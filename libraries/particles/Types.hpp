@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -20,6 +21,24 @@ using Vec = Eigen::Matrix<double, D, 1>;
 
 template <int D>
 using Mat = Eigen::Matrix<double, D, D>;
+
+// x^(1/D) for x >= 0: a length from a D-dimensional volume, a stretch from a volume ratio.
+template <int D>
+inline double rootOfDimension(double x)
+{
+    if constexpr (D == 1)
+    {
+        return x;
+    }
+    else if constexpr (D == 2)
+    {
+        return std::sqrt(x);
+    }
+    else
+    {
+        return std::cbrt(x);
+    }
+}
 
 // Number of distinct second-order monomials v_j v_k (j <= k): 1, 3, 6.
 template <int D>

@@ -69,7 +69,7 @@ private:
 #pragma omp parallel for schedule(static) if (useThreads(n))
         for (std::size_t a = 0; a < n; ++a)
         {
-            const double sa = spacingOf(V0[a]);
+            const double sa = rootOfDimension<D>(V0[a]);
             const double Ma = modulus_[static_cast<std::size_t>(body[a])];
             Vec<D> force = Vec<D>::Zero();
             double ea = 0.0;
@@ -77,7 +77,7 @@ private:
             for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k) // the self entry first
             {
                 const std::size_t b = list.indices[k];
-                const double s = 0.5 * (sa + spacingOf(V0[b]));
+                const double s = 0.5 * (sa + rootOfDimension<D>(V0[b]));
                 const double d = distance_ * s;
                 const Vec<D> xab = x[a] - x[b];
                 const double r2 = xab.squaredNorm();
@@ -111,22 +111,6 @@ private:
             total += e; // in particle order: independent of the thread count
         }
         return total;
-    }
-
-    static double spacingOf(double volume)
-    {
-        if constexpr (D == 1)
-        {
-            return volume;
-        }
-        else if constexpr (D == 2)
-        {
-            return std::sqrt(volume);
-        }
-        else
-        {
-            return std::cbrt(volume);
-        }
     }
 
     double distance_;

@@ -217,27 +217,6 @@ Mat<D> GradF<D>::deformationGradient(std::size_t a, const std::vector<Vec<D>>& x
     return f * ref.F[a];
 }
 
-namespace
-{
-// x^(1/D) for x > 0.
-template <int D>
-double rootOf(double x)
-{
-    if constexpr (D == 1)
-    {
-        return x;
-    }
-    else if constexpr (D == 2)
-    {
-        return std::sqrt(x);
-    }
-    else
-    {
-        return std::cbrt(x);
-    }
-}
-} // namespace
-
 template <int D>
 double GradF<D>::fillSamples(const Kinematics& kin, std::size_t count, Scratch& scratch) const
 {
@@ -251,7 +230,7 @@ double GradF<D>::fillSamples(const Kinematics& kin, std::size_t count, Scratch& 
         if (particleVolume_)
         {
             // An inverted sample has no F̄; it is reported and the run stops (§G13).
-            scratch.alpha[j] = Jb > 0.0 ? rootOf<D>(Ja / Jb) : 1.0;
+            scratch.alpha[j] = Jb > 0.0 ? rootOfDimension<D>(Ja / Jb) : 1.0;
             scratch.F[j] *= scratch.alpha[j];
         }
     }

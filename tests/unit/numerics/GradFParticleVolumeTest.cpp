@@ -7,7 +7,7 @@
 //     where the neighbourhoods are symmetric; a non-affine one is not (the test has teeth);
 //   - objective: a rotated, yielded configuration rotates the forces and changes no scalar;
 //   - every sample of a particle has the particle's volume, det F̄_b(a) = J_a.
-#include "numerics/NumericsSupport.hpp"
+#include "numerics/PlasticMotion.hpp"
 #include "stabilisation/gradF/GradF.hpp"
 
 using namespace sph;
@@ -22,23 +22,6 @@ const char* kAssociativeDP = "type druckerPrager; E 2.5; nu 0.3; rho 1; friction
                              "dilatancyAngle 30; cohesion 0.01;";
 const char* kParticle = "type gradF; sampleVolume particle;";
 const char* kParticleElasticState = "type gradF; sampleVolume particle; plasticSamples elasticState;";
-
-// A step's motion: smooth plus a random part of `noise` spacings.
-template <int D>
-std::vector<Vec<D>> step(const std::vector<Vec<D>>& x, double noise, unsigned seed)
-{
-    std::mt19937 random(seed);
-    std::normal_distribution<double> normal;
-    std::vector<Vec<D>> y(x);
-    for (auto& p : y)
-    {
-        for (int d = 0; d < D; ++d)
-        {
-            p[d] += 0.01 * std::sin(0.4 * p.sum() + d) + noise * normal(random);
-        }
-    }
-    return y;
-}
 
 template <int D>
 void checkForceIsTheGradient(test::SchemeFixture<D>& f, const std::vector<Vec<D>>& x)
@@ -70,7 +53,7 @@ void elasticForce(bool updated)
         f.forces(x1);
         REQUIRE(f.moveReference(x1).ok());
     }
-    checkForceIsTheGradient<D>(f, step<D>(x1, 0.02, 5));
+    checkForceIsTheGradient<D>(f, test::step<D>(x1, 0.02, 5));
 }
 
 template <int D>
@@ -82,10 +65,10 @@ void plasticForceAfterMoves(const char* materialText)
     const auto x1 = test::deformCurrent<D>(f.ref.x, 17);
     REQUIRE(f.commit(x1) > 0.0);
     REQUIRE(f.moveReference(x1).ok());
-    const auto x2 = step<D>(x1, 0.02, 3);
+    const auto x2 = test::step<D>(x1, 0.02, 3);
     REQUIRE(f.commit(x2) > 0.0);
     REQUIRE(f.moveReference(x2).ok());
-    checkForceIsTheGradient<D>(f, step<D>(x2, 0.02, 4));
+    checkForceIsTheGradient<D>(f, test::step<D>(x2, 0.02, 4));
 }
 
 // For an affine motion every sample is F_a (G = 0, α = 1): the energy is the paper's to
@@ -186,56 +169,6 @@ void samplesHaveTheParticlesVolume()
     CHECK(spread > 1e-3);
 }
 
-template <int D>
-void objectivity()
-{
-    const auto run = [](const Mat<D>& Q, std::vector<Vec<D>>& T, double& energy, double& dissipated)
-    {
-        test::SchemeFixture<D> f(test::schemeCloud<D>(7), kParticleElasticState, kPlastic, false,
-                                 test::schemeHOverDx<D>());
-        const auto rotated = [&Q](const std::vector<Vec<D>>& y)
-        {
-            std::vector<Vec<D>> z(y.size());
-            for (std::size_t a = 0; a < y.size(); ++a)
-            {
-                z[a] = Q * y[a];
-            }
-            return z;
-        };
-        const auto x1 = test::deformCurrent<D>(f.ref.x, 17);
-        const auto x2 = step<D>(x1, 0.02, 3);
-        const auto x3 = step<D>(x2, 0.02, 4);
-        dissipated = f.commit(rotated(x1));
-        REQUIRE(f.moveReference(rotated(x1)).ok());
-        dissipated += f.commit(rotated(x2));
-        REQUIRE(f.moveReference(rotated(x2)).ok());
-        T = f.forces(rotated(x3));
-        energy = f.energy(rotated(x3));
-    };
-    Mat<D> Q = Mat<D>::Identity();
-    if constexpr (D == 2)
-    {
-        Q = Eigen::Rotation2Dd(0.7).toRotationMatrix();
-    }
-    else
-    {
-        Q = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-    }
-    std::vector<Vec<D>> T0, T1;
-    double e0, e1, d0, d1;
-    run(Mat<D>::Identity(), T0, e0, d0);
-    run(Q, T1, e1, d1);
-    REQUIRE(d0 > 0.0);
-    CHECK(e1 == Approx(e0).epsilon(1e-11));
-    CHECK(d1 == Approx(d0).epsilon(1e-11));
-    double difference = 0.0;
-    for (std::size_t a = 0; a < T0.size(); ++a)
-    {
-        difference = std::max(difference, (T1[a] - Q * T0[a]).cwiseAbs().maxCoeff());
-    }
-    CHECK(difference < 1e-10 * test::largestComponent<D>(T0));
-}
-
 } // namespace
 
 TEST_CASE("gradF sampleVolume particle: force = -dPi/dx, elastic, total and updated Lagrangian",
@@ -277,6 +210,6 @@ TEST_CASE("gradF sampleVolume particle: objective (a rotated, yielded configurat
           "[gradF][sampleVolume][plasticity]")
 {
     test::loadModelLibraries();
-    objectivity<2>();
-    objectivity<3>();
+    test::checkObjectiveAfterMoves<2>(kParticleElasticState, kPlastic);
+    test::checkObjectiveAfterMoves<3>(kParticleElasticState, kPlastic);
 }

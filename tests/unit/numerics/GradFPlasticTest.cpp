@@ -13,7 +13,7 @@
 //   - (§G9) moveWeights: with conserving weights a move changes Π by round-off only (pairs
 //     entering and leaving included), with nonIncreasing it never raises it, and the force
 //     between moves stays −∂Π/∂x.
-#include "numerics/NumericsSupport.hpp"
+#include "numerics/PlasticMotion.hpp"
 #include "stabilisation/gradF/GradF.hpp"
 
 #include <map>
@@ -51,23 +51,6 @@ std::vector<Vec<D>> mapped(const Mat<D>& A, const std::vector<Vec<D>>& x)
     for (std::size_t a = 0; a < x.size(); ++a)
     {
         y[a] = A * x[a];
-    }
-    return y;
-}
-
-// A step's motion: smooth plus a random part of `noise` spacings.
-template <int D>
-std::vector<Vec<D>> step(const std::vector<Vec<D>>& x, double noise, unsigned seed)
-{
-    std::mt19937 random(seed);
-    std::normal_distribution<double> normal;
-    std::vector<Vec<D>> y(x);
-    for (auto& p : y)
-    {
-        for (int d = 0; d < D; ++d)
-        {
-            p[d] += 0.01 * std::sin(0.4 * p.sum() + d) + noise * normal(random);
-        }
     }
     return y;
 }
@@ -212,14 +195,14 @@ void forceAfterAMove(const char* materialText)
     const auto x1 = test::deformCurrent<D>(f.ref.x, 17);
     REQUIRE(f.commit(x1) > 0.0);
     REQUIRE(f.moveReference(x1).ok());
-    const auto x2 = step<D>(x1, 0.02, 3);
+    const auto x2 = test::step<D>(x1, 0.02, 3);
     REQUIRE(f.commit(x2) > 0.0);
     REQUIRE(f.moveReference(x2).ok());
     for (const auto& K : f.ref.K)
     {
         CHECK(K.slice[0].norm() == 0.0);
     }
-    const auto x3 = step<D>(x2, 0.02, 4);
+    const auto x3 = test::step<D>(x2, 0.02, 4);
     ForceStatus status;
     const auto T = f.forces(x3, &status);
     REQUIRE(status.ok());
@@ -232,49 +215,6 @@ void forceAfterAMove(const char* materialText)
     }
     CHECK(total.cwiseAbs().maxCoeff() < 1e-13 * sum);
     CHECK(test::largestForceError(f, x3, T) / test::largestComponent<D>(T) < 1e-6);
-}
-
-// Two runs whose current configurations differ by a rotation Q (the initial one is the same):
-// commit, move, commit, move and evaluate. Forces rotate, energy and dissipation do not change.
-template <int D>
-void objectivity()
-{
-    const auto run = [](const Mat<D>& Q, std::vector<Vec<D>>& T, double& energy, double& dissipated)
-    {
-        test::SchemeFixture<D> f(test::schemeCloud<D>(7), kElasticState, kPlastic, false,
-                                 test::schemeHOverDx<D>());
-        const auto x1 = test::deformCurrent<D>(f.ref.x, 17);
-        const auto x2 = step<D>(x1, 0.02, 3);
-        const auto x3 = step<D>(x2, 0.02, 4);
-        dissipated = f.commit(mapped<D>(Q, x1));
-        REQUIRE(f.moveReference(mapped<D>(Q, x1)).ok());
-        dissipated += f.commit(mapped<D>(Q, x2));
-        REQUIRE(f.moveReference(mapped<D>(Q, x2)).ok());
-        T = f.forces(mapped<D>(Q, x3));
-        energy = f.energy(mapped<D>(Q, x3));
-    };
-    Mat<D> Q = Mat<D>::Identity();
-    if constexpr (D == 2)
-    {
-        Q = Eigen::Rotation2Dd(0.7).toRotationMatrix();
-    }
-    else
-    {
-        Q = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-    }
-    std::vector<Vec<D>> T0, T1;
-    double e0, e1, d0, d1;
-    run(Mat<D>::Identity(), T0, e0, d0);
-    run(Q, T1, e1, d1);
-    REQUIRE(d0 > 0.0);
-    CHECK(e1 == Approx(e0).epsilon(1e-11));
-    CHECK(d1 == Approx(d0).epsilon(1e-11));
-    double difference = 0.0;
-    for (std::size_t a = 0; a < T0.size(); ++a)
-    {
-        difference = std::max(difference, (T1[a] - Q * T0[a]).cwiseAbs().maxCoeff());
-    }
-    CHECK(difference < 1e-10 * test::largestComponent<D>(T0));
 }
 
 // Forces of ownHistory (the paper's kinematics, K carried) and elasticState after the same
@@ -344,10 +284,10 @@ double largestMoveChange(const char* materialText, const std::string& weights,
         {
             *neverRaises = *neverRaises && after <= before * (1.0 + 1e-13);
         }
-        x = step<D>(x, 0.02, 3 + move);
+        x = test::step<D>(x, 0.02, 3 + move);
         REQUIRE(f.commit(x) >= 0.0);
     }
-    const auto next = step<D>(x, 0.02, 9);
+    const auto next = test::step<D>(x, 0.02, 9);
     const auto T = f.forces(next);
     CHECK(test::largestForceError(f, next, T) / test::largestComponent<D>(T) < 1e-6);
     return largest;
@@ -405,8 +345,8 @@ TEST_CASE("gradF elasticState: objective (a rotated, yielded configuration rotat
           "[plasticity][gradF]")
 {
     test::loadModelLibraries();
-    objectivity<2>();
-    objectivity<3>();
+    test::checkObjectiveAfterMoves<2>(kElasticState, kPlastic);
+    test::checkObjectiveAfterMoves<3>(kElasticState, kPlastic);
 }
 
 // Affine: every sample is F_a in both schemes, moves included (round-off). Smooth: the same
@@ -475,7 +415,7 @@ double smallestSampleDeterminant(const char* schemeText, int moves)
         {
             return -1.0; // a particle inverted at the move
         }
-        x = step<D>(x, 0.05, 10 + static_cast<unsigned>(s));
+        x = test::step<D>(x, 0.05, 10 + static_cast<unsigned>(s));
     }
     double smallest = 1e300;
     for (std::size_t a = 0; a < x.size(); ++a)
@@ -550,7 +490,7 @@ TEST_CASE("gradF elasticState: an elastic material gives the paper's gradF bit f
         {
             f.forces(x);
             REQUIRE(f.moveReference(x).ok());
-            x = step<2>(x, 0.02, 20 + s);
+            x = test::step<2>(x, 0.02, 20 + s);
         }
         T.push_back(f.forces(x));
         double K = 0.0;

@@ -1,0 +1,80 @@
+#pragma once
+// Motions and checks shared by the tests of gradF's samples in plastic flow
+// (GradFPlasticTest, GradFParticleVolumeTest).
+
+#include "numerics/NumericsSupport.hpp"
+
+namespace sph::test
+{
+
+// A step's motion: smooth plus a random part of `noise` spacings.
+template <int D>
+std::vector<Vec<D>> step(const std::vector<Vec<D>>& x, double noise, unsigned seed)
+{
+    std::mt19937 random(seed);
+    std::normal_distribution<double> normal;
+    std::vector<Vec<D>> y(x);
+    for (auto& p : y)
+    {
+        for (int d = 0; d < D; ++d)
+        {
+            p[d] += 0.01 * std::sin(0.4 * p.sum() + d) + noise * normal(random);
+        }
+    }
+    return y;
+}
+
+// Objectivity through plastic flow and moves of the reference: two runs whose current
+// configurations differ by a rotation Q (the initial one is the same) commit, move, commit,
+// move and evaluate. The forces rotate; the energy and the dissipation do not change.
+template <int D>
+void checkObjectiveAfterMoves(const std::string& schemeText, const std::string& materialText)
+{
+    INFO(D << "D " << schemeText << " " << materialText);
+    const auto run = [&](const Mat<D>& Q, std::vector<Vec<D>>& T, double& energy, double& dissipated)
+    {
+        SchemeFixture<D> f(schemeCloud<D>(7), schemeText, materialText, false, schemeHOverDx<D>());
+        const auto rotated = [&Q](const std::vector<Vec<D>>& y)
+        {
+            std::vector<Vec<D>> z(y.size());
+            for (std::size_t a = 0; a < y.size(); ++a)
+            {
+                z[a] = Q * y[a];
+            }
+            return z;
+        };
+        const auto x1 = deformCurrent<D>(f.ref.x, 17);
+        const auto x2 = step<D>(x1, 0.02, 3);
+        const auto x3 = step<D>(x2, 0.02, 4);
+        dissipated = f.commit(rotated(x1));
+        REQUIRE(f.moveReference(rotated(x1)).ok());
+        dissipated += f.commit(rotated(x2));
+        REQUIRE(f.moveReference(rotated(x2)).ok());
+        T = f.forces(rotated(x3));
+        energy = f.energy(rotated(x3));
+    };
+    Mat<D> Q = Mat<D>::Identity();
+    if constexpr (D == 2)
+    {
+        Q = Eigen::Rotation2Dd(0.7).toRotationMatrix();
+    }
+    else
+    {
+        Q = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    }
+    std::vector<Vec<D>> T0, T1;
+    double e0, e1, d0, d1;
+    run(Mat<D>::Identity(), T0, e0, d0);
+    run(Q, T1, e1, d1);
+    REQUIRE(d0 > 0.0);
+    CHECK(e1 == Approx(e0).epsilon(1e-11));
+    CHECK(d1 == Approx(d0).epsilon(1e-11));
+    double difference = 0.0;
+    for (std::size_t a = 0; a < T0.size(); ++a)
+    {
+        difference = std::max(difference, (T1[a] - Q * T0[a]).cwiseAbs().maxCoeff());
+    }
+    CHECK(difference < 1e-10 * largestComponent<D>(T0));
+}
+
+} // namespace sph::test
