@@ -4,8 +4,8 @@
 // Measured at this spacing (tutorial README, docs/results.md §6): plateau q/c_u = 5.404 over
 // penetration 0.05B-0.10B, +5.1 % over Prandtl's 2 + pi (B/20: +3.0 %, B/40: +3.3 %). The band
 // below, 5.14 to 5.65, holds that figure and fails a load that does not reach the limit or
-// rises past it (the gradF schemes give 7.3-8.1 here, a footing that does not yield keeps
-// rising without bound); the floor carries the footing's load, so the load is quasi-static.
+// rises past it (the gradF schemes give 7.8-7.9 here, hourglass 10.3; a soil that does not
+// yield keeps rising without bound); the floor carries the footing's load (quasi-static).
 #include "support/CaseRunner.hpp"
 
 #include <cmath>
