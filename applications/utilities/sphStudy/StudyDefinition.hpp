@@ -49,7 +49,8 @@
 //   exactSolution     functionObject; value (default relativeLinfError): a result of an
 //                     exactSolution function object in each run's summary.json
 //   summary           value: any number of summary.json by path (functions/energy/maxDrift)
-//   referenceVariant  file, column; variant or referenceLevels; norm max|rms (default max);
+//   referenceVariant  file, column; variant or referenceLevels; norm max|rms|mean (default
+//                     max; mean: |mean of the difference|, a plateau's offset);
 //                     scale: a table column against another variant's, relative to
 //                     max |reference| (or to scale)
 //   referenceFile     file, column; reference, referenceColumn (a name, or a number in

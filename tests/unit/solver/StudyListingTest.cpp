@@ -24,7 +24,7 @@ TEST_CASE("sphStudy -listTypes lists the metric types with their keys", "[study]
             {"exactSolution", {"functionObject  (word, required)",
                                "value  (string, default relativeLinfError)"}},
             {"referenceFile", {"file  (string, required)", "column  (word, required)",
-                               "norm  (word, default max, one of: max rms)",
+                               "norm  (word, default max, one of: max mean rms)",
                                "scale  (real, optional", "reference  (string, required)",
                                "referenceColumn  (string, required)"}},
             {"referenceVariant", {"file  (string, required)", "column  (word, required)",

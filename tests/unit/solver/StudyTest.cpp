@@ -55,6 +55,17 @@ metrics
         referenceColumn "2";            // a number in quotes: a string key
         scale           1e-3;
     }
+    // The same, its mean (norm mean: |mean of the difference|, a plateau's offset).
+    meanTip
+    {
+        type            referenceFile;
+        file            postProcessing/tipError/tipError.dat;
+        column          u_numeric;
+        reference       "zeros.dat";
+        referenceColumn "2";
+        norm            mean;
+        scale           1e-3;
+    }
 }
 plot { groupBy scheme; along resolution; }
 stable { selfConvergence { max 1e-3; } }    // only the reference resolution passes
@@ -143,13 +154,20 @@ TEST_CASE("sphStudy runs every variant, measures, reports and resumes", "[study]
         }
         CHECK((std::stod(row.at("againstOne")) == 0.0) == (row.at("variant") == "n40_TLnone"));
         double largest = 0.0;
-        for (double u : readTable(study / "runs" / row.at("variant") /
-                                  "postProcessing/tipError/tipError.dat")
-                            .column("u_numeric"))
+        double sum = 0.0;
+        const auto tip = readTable(study / "runs" / row.at("variant") /
+                                   "postProcessing/tipError/tipError.dat")
+                             .column("u_numeric");
+        for (double u : tip)
         {
             largest = std::max(largest, std::abs(u));
+            sum += u;
         }
         CHECK(std::stod(row.at("largestTip")) == Approx(largest / 1e-3).epsilon(1e-8));
+        const double mean = std::abs(sum / static_cast<double>(tip.size())) / 1e-3;
+        CHECK(mean > 0.0);
+        CHECK(mean < largest / 1e-3); // the bar's tip swings both ways
+        CHECK(std::stod(row.at("meanTip")) == Approx(mean).epsilon(1e-6));
         if (row.at("resolution") == "n40")
         {
             CHECK(row.at("verdict") == "pass"); // RFC 4180: quoted only when needed

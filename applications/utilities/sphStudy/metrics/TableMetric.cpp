@@ -48,8 +48,10 @@ Schema TableMetric::tableSchema()
         .add(Key::string("file", "a table each run writes, relative to its case, e.g. "
                                  "postProcessing/extent/extent.dat"))
         .add(Key::word("column", "the column of that table"))
-        .add(Key::word("norm", "max or rms of the difference over the common time range")
-                 .choices({"max", "rms"})
+        .add(Key::word("norm", "max or rms of the difference over the common time range, or "
+                               "mean: the absolute value of its mean (a plateau's offset, "
+                               "the oscillation about it averaged out)")
+                 .choices({"max", "rms", "mean"})
                  .defaultValue("max"))
         .add(Key::real("scale", "divide the difference by this instead of max |reference|")
                  .positive()
@@ -122,6 +124,7 @@ double TableMetric::compare(const StudyRun& run, const Reference& referenceRun) 
     }
     double worst = 0.0;
     double squares = 0.0;
+    double sum = 0.0;
     std::size_t count = 0;
     std::size_t j = 0;
     for (std::size_t i = 0; i < time.size() && i < value.size(); ++i)
@@ -141,6 +144,7 @@ double TableMetric::compare(const StudyRun& run, const Reference& referenceRun) 
             const double s = (t - referenceTime[j]) / (referenceTime[j + 1] - referenceTime[j]);
             r = (1.0 - s) * reference[j] + s * reference[j + 1];
         }
+        sum += value[i] - r;
         const double d = std::abs(value[i] - r);
         worst = std::max(worst, d);
         squares += d * d;
@@ -178,7 +182,12 @@ double TableMetric::compare(const StudyRun& run, const Reference& referenceRun) 
                                      "scale 1e-3; for differences in mm.",
                                      keptForNextCall});
     }
-    return (norm_ == "rms" ? std::sqrt(squares / static_cast<double>(count)) : worst) / scale;
+    const double n = static_cast<double>(count);
+    if (norm_ == "mean")
+    {
+        return std::abs(sum / n) / scale;
+    }
+    return (norm_ == "rms" ? std::sqrt(squares / n) : worst) / scale;
 }
 
 } // namespace sph

@@ -27,7 +27,7 @@ protected:
     };
 
     // max or rms of (the run's column - the reference column interpolated at the run's times)
-    // over their common time range, relative to `scale`, or to max |reference| without one.
+    // over their common time range, or the absolute value of its mean (norm mean), relative to `scale`, or to max |reference| without one.
     // MetricDefinitionError when studyDict is wrong (no common time between a finished run and
     // a complete reference, a reference of zeros without `scale`), std::runtime_error when a
     // run did not produce what is compared (not available).
@@ -42,7 +42,7 @@ protected:
     SourceLocation metricAt_; // the metric's dictionary in studyDict
 
 private:
-    std::string norm_;   // max | rms
+    std::string norm_;   // max | rms | mean
     double scale_ = 0.0; // > 0: divide by this instead
     SourceLocation fileAt_;
     SourceLocation columnAt_;
