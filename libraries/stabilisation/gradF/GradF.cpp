@@ -69,6 +69,14 @@ GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
                         "but plasticSamples is " + params.word("plasticSamples"),
                     {"hint: add 'plasticSamples elasticState;' or remove moveWeights"});
     }
+    // In 1D F̄_b(a) = (J_a / F_b) F_b = F_a for every sample: nothing of gradF would be left.
+    if (D == 1 && particleVolume_)
+    {
+        params.fail("sampleVolume",
+                    "sampleVolume particle in 1D gives every stress sample the particle's F "
+                    "(a volume ratio is all a 1D F has), which removes gradF's stabilisation",
+                    {"hint: remove sampleVolume (own, the default) in a 1D case"});
+    }
 }
 
 template <int D>
