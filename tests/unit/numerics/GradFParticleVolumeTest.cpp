@@ -24,24 +24,6 @@ const char* kParticle = "type gradF; sampleVolume particle;";
 const char* kParticleElasticState = "type gradF; sampleVolume particle; plasticSamples elasticState;";
 
 template <int D>
-void checkForceIsTheGradient(test::SchemeFixture<D>& f, const std::vector<Vec<D>>& x)
-{
-    ForceStatus status;
-    const auto T = f.forces(x, &status);
-    REQUIRE(status.ok());
-    Vec<D> total = Vec<D>::Zero();
-    double sum = 0.0;
-    for (const auto& t : T)
-    {
-        total += t;
-        sum += t.norm();
-    }
-    REQUIRE(sum > 0.0);
-    CHECK(total.cwiseAbs().maxCoeff() < 1e-12 * sum);
-    CHECK(test::largestForceError(f, x, T) / test::largestComponent<D>(T) < 1e-6);
-}
-
-template <int D>
 void elasticForce(bool updated)
 {
     INFO(D << "D, " << (updated ? "updated" : "total") << " Lagrangian");
@@ -53,22 +35,7 @@ void elasticForce(bool updated)
         f.forces(x1);
         REQUIRE(f.moveReference(x1).ok());
     }
-    checkForceIsTheGradient<D>(f, test::step<D>(x1, 0.02, 5));
-}
-
-template <int D>
-void plasticForceAfterMoves(const char* materialText)
-{
-    INFO(D << "D " << materialText);
-    test::SchemeFixture<D> f(test::schemeCloud<D>(7), kParticleElasticState, materialText, false,
-                             test::schemeHOverDx<D>());
-    const auto x1 = test::deformCurrent<D>(f.ref.x, 17);
-    REQUIRE(f.commit(x1) > 0.0);
-    REQUIRE(f.moveReference(x1).ok());
-    const auto x2 = test::step<D>(x1, 0.02, 3);
-    REQUIRE(f.commit(x2) > 0.0);
-    REQUIRE(f.moveReference(x2).ok());
-    checkForceIsTheGradient<D>(f, test::step<D>(x2, 0.02, 4));
+    test::checkForceIsTheGradient<D>(f, test::step<D>(x1, 0.02, 5));
 }
 
 // For an affine motion every sample is F_a (G = 0, α = 1): the energy is the paper's to
@@ -186,9 +153,9 @@ TEST_CASE("gradF sampleVolume particle: force = -dPi/dx with elasticState sample
           "[gradF][sampleVolume][plasticity]")
 {
     test::loadModelLibraries();
-    plasticForceAfterMoves<2>(kPlastic);
-    plasticForceAfterMoves<3>(kPlastic);
-    plasticForceAfterMoves<2>(kAssociativeDP);
+    test::checkForceAfterMoves<2>(kParticleElasticState, kPlastic);
+    test::checkForceAfterMoves<3>(kParticleElasticState, kPlastic);
+    test::checkForceAfterMoves<2>(kParticleElasticState, kAssociativeDP);
 }
 
 TEST_CASE("gradF sampleVolume particle: the paper's gradF for an affine motion", "[gradF][sampleVolume]")

@@ -184,39 +184,6 @@ void moveChangesOnlyTheWeights(const char* materialText)
     }
 }
 
-// After a move with a plastic history: K = 0 at every particle, and the force at a step further
-// is −∂Π/∂x of the rebased samples, with zero total.
-template <int D>
-void forceAfterAMove(const char* materialText)
-{
-    INFO(D << "D " << materialText);
-    test::SchemeFixture<D> f(test::schemeCloud<D>(7), kElasticState, materialText, false,
-                             test::schemeHOverDx<D>());
-    const auto x1 = test::deformCurrent<D>(f.ref.x, 17);
-    REQUIRE(f.commit(x1) > 0.0);
-    REQUIRE(f.moveReference(x1).ok());
-    const auto x2 = test::step<D>(x1, 0.02, 3);
-    REQUIRE(f.commit(x2) > 0.0);
-    REQUIRE(f.moveReference(x2).ok());
-    for (const auto& K : f.ref.K)
-    {
-        CHECK(K.slice[0].norm() == 0.0);
-    }
-    const auto x3 = test::step<D>(x2, 0.02, 4);
-    ForceStatus status;
-    const auto T = f.forces(x3, &status);
-    REQUIRE(status.ok());
-    Vec<D> total = Vec<D>::Zero();
-    double sum = 0.0;
-    for (const auto& t : T)
-    {
-        total += t;
-        sum += t.norm();
-    }
-    CHECK(total.cwiseAbs().maxCoeff() < 1e-13 * sum);
-    CHECK(test::largestForceError(f, x3, T) / test::largestComponent<D>(T) < 1e-6);
-}
-
 // Forces of ownHistory (the paper's kinematics, K carried) and elasticState after the same
 // moves, relative to the largest force, over the particles at least `margin` from the cloud's
 // edge.
@@ -336,9 +303,9 @@ TEST_CASE("gradF elasticState: after moves K = 0, force = -dPi/dx, momentum cons
           "[plasticity][gradF]")
 {
     test::loadModelLibraries();
-    forceAfterAMove<2>(kPlastic);
-    forceAfterAMove<3>(kPlastic);
-    forceAfterAMove<2>(kDP);
+    test::checkForceAfterMoves<2>(kElasticState, kPlastic);
+    test::checkForceAfterMoves<3>(kElasticState, kPlastic);
+    test::checkForceAfterMoves<2>(kElasticState, kDP);
 }
 
 TEST_CASE("gradF elasticState: objective (a rotated, yielded configuration rotates the forces)",

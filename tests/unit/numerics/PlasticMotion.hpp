@@ -24,6 +24,46 @@ std::vector<Vec<D>> step(const std::vector<Vec<D>>& x, double noise, unsigned se
     return y;
 }
 
+// The scheme's force at x is −∂Π/∂x (central differences) and sums to zero (momentum).
+template <int D>
+void checkForceIsTheGradient(SchemeFixture<D>& f, const std::vector<Vec<D>>& x)
+{
+    ForceStatus status;
+    const auto T = f.forces(x, &status);
+    REQUIRE(status.ok());
+    Vec<D> total = Vec<D>::Zero();
+    double sum = 0.0;
+    for (const auto& t : T)
+    {
+        total += t;
+        sum += t.norm();
+    }
+    REQUIRE(sum > 0.0);
+    CHECK(total.cwiseAbs().maxCoeff() < 1e-13 * sum);
+    CHECK(largestForceError(f, x, T) / largestComponent<D>(T) < 1e-6);
+}
+
+// Samples that carry their elastic state, after two commits and moves of the reference in
+// plastic flow: K = 0 at every particle, and the force a step further is −∂Π/∂x (finite
+// differences) with zero total.
+template <int D>
+void checkForceAfterMoves(const std::string& schemeText, const std::string& materialText)
+{
+    INFO(D << "D " << schemeText << " " << materialText);
+    SchemeFixture<D> f(schemeCloud<D>(7), schemeText, materialText, false, schemeHOverDx<D>());
+    const auto x1 = deformCurrent<D>(f.ref.x, 17);
+    REQUIRE(f.commit(x1) > 0.0);
+    REQUIRE(f.moveReference(x1).ok());
+    const auto x2 = step<D>(x1, 0.02, 3);
+    REQUIRE(f.commit(x2) > 0.0);
+    REQUIRE(f.moveReference(x2).ok());
+    for (const auto& K : f.ref.K)
+    {
+        CHECK(K.slice[0].norm() == 0.0);
+    }
+    checkForceIsTheGradient<D>(f, step<D>(x2, 0.02, 4));
+}
+
 // Objectivity through plastic flow and moves of the reference: two runs whose current
 // configurations differ by a rotation Q (the initial one is the same) commit, move, commit,
 // move and evaluate. The forces rotate; the energy and the dissipation do not change.
