@@ -226,7 +226,8 @@ Mat<D> GradF<D>::deformationGradient(std::size_t a, const std::vector<Vec<D>>& x
 }
 
 template <int D>
-double GradF<D>::fillSamples(const Kinematics& kin, std::size_t count, Scratch& scratch) const
+double GradF<D>::fillSamples(const Kinematics& kin, std::size_t count, Scratch& scratch,
+                             bool particleVolume) const
 {
     double smallest = std::numeric_limits<double>::infinity();
     const double Ja = kin.F.determinant();
@@ -235,7 +236,7 @@ double GradF<D>::fillSamples(const Kinematics& kin, std::size_t count, Scratch& 
         scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
         const double Jb = scratch.F[j].determinant();
         smallest = std::min(smallest, Jb);
-        if (particleVolume_)
+        if (particleVolume)
         {
             // An inverted sample has no F̄; it is reported and the run stops (§G13).
             scratch.alpha[j] = Jb > 0.0 ? rootOfDimension<D>(Ja / Jb) : 1.0;
@@ -365,8 +366,9 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 // Stresses at F_b(a) = F_a + G_a x^r_ba (or F̄_b(a)) for every neighbour b
                 // (incl. a).
                 const std::size_t count = list.count(a);
-                const double smallestSample = fillSamples(kin, count, scratch);
-                if (particleVolume_ && !(smallestSample > 0.0) && in.counts(a))
+                const bool bar = particleVolume_ && material.hasHistory();
+                const double smallestSample = fillSamples(kin, count, scratch, bar);
+                if (bar && !(smallestSample > 0.0) && in.counts(a))
                 {
                     tally.flagJacobian(a, smallestSample);
                 }
@@ -388,7 +390,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                     sampleDissipation_[a] = in.V0[a] * dissipation;
                 }
                 out.P[a] = scratch.P[0]; // b = a: F_a(a) = F_a
-                const double pressure = particleVolume_ ? chainParticleVolume(count, scratch) : 0.0;
+                const double pressure = bar ? chainParticleVolume(count, scratch) : 0.0;
                 // S_a = Σ Ŵ P_b,  Q_a[k] = Σ Ŵ x^r_ba,k P_b
                 Mat<D> S = Mat<D>::Zero();
                 Tensor3<D> Q = Tensor3<D>::zero();
@@ -411,7 +413,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 {
                     tally.energy += in.V0[a] * energy;
                 }
-                if (particleVolume_)
+                if (bar)
                 {
                     S.noalias() += pressure * kin.F.inverse().transpose();
                 }
@@ -485,7 +487,7 @@ double GradF<D>::energy(const ForceInput<D>& in)
             const Kinematics kin = kinematics(a, in.x, ref, false, scratch);
             double sum = 0.0;
             const std::size_t count = list.count(a);
-            fillSamples(kin, count, scratch);
+            fillSamples(kin, count, scratch, particleVolume_ && material.hasHistory());
             evaluateSamples(a, material, list, count, scratch.psi.data(), scratch, false);
             if (samples_.weighted() && material.hasHistory())
             {

@@ -28,7 +28,9 @@
 //   particle  every sample of a takes a's volume: F̄_b(a) = (J_a / det F_b(a))^(1/D) F_b(a), the
 //             F-bar method; the spread of the samples is then isochoric and the force the exact
 //             −∂Π/∂x of the energy at F̄ (§G13: the deviatoric Kirchhoff stress of each sample
-//             through its own F_b, their mean pressure through F_a)
+//             through its own F_b, their mean pressure through F_a). Only for the particles of
+//             a material with history (plastic): an elastic body keeps the paper's samples, bit
+//             for bit (§G14: with F-bar the UL twisting column fails)
 // Keys:
 //   plasticSamples | ownHistory | linearised | elasticState | ownHistory
 //   sampleVolume   | own | particle                           | own
@@ -131,9 +133,10 @@ public:
                           Scratch& scratch) const;
 
     // The count stress samples of particle a into scratch.F: F_b(a) = F_a + G_a x^r_ba, or,
-    // with sampleVolume particle, F̄_b(a) (scratch.alpha the factors). Returns the smallest
+    // with particleVolume, F̄_b(a) (scratch.alpha the factors). Returns the smallest
     // det F_b(a) (positive unless a sample is inverted, §G13).
-    double fillSamples(const Kinematics& kin, std::size_t count, Scratch& scratch) const;
+    double fillSamples(const Kinematics& kin, std::size_t count, Scratch& scratch,
+                       bool particleVolume) const;
 
 private:
     // sampleVolume particle: the samples' stresses P̄ at F̄_b(a) in scratch.P become the

@@ -6,7 +6,8 @@
 //   - an affine motion is the paper's gradF (G = 0: α = 1): the energy to round-off, the force
 //     where the neighbourhoods are symmetric; a non-affine one is not (the test has teeth);
 //   - objective: a rotated, yielded configuration rotates the forces and changes no scalar;
-//   - every sample of a particle has the particle's volume, det F̄_b(a) = J_a.
+//   - every sample of a particle has the particle's volume, det F̄_b(a) = J_a;
+//   - a material without history (neoHookean) keeps the paper's samples, bit for bit.
 #include "numerics/PlasticMotion.hpp"
 #include "stabilisation/gradF/GradF.hpp"
 
@@ -15,7 +16,10 @@ using namespace sph;
 namespace
 {
 
-const char* kElastic = "type neoHookean; mu 1; kappa 5; rho 1;";
+// F-bar acts on the particles of a material with history: a J2 material that never yields is
+// elastic with it on; neoHookean keeps the paper's samples.
+const char* kElastic = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 1e30;";
+const char* kNeoHookean = "type neoHookean; mu 1; kappa 5; rho 1;";
 const char* kPlastic = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 0.02; "
                        "hardeningModulus 0.2;";
 const char* kAssociativeDP = "type druckerPrager; E 2.5; nu 0.3; rho 1; frictionAngle 30; "
@@ -126,7 +130,7 @@ void samplesHaveTheParticlesVolume()
         scratch.resize(count);
         const auto kin = scheme.kinematics(a, x, f.ref, false, scratch);
         const double Ja = kin.F.determinant();
-        REQUIRE(scheme.fillSamples(kin, count, scratch) > 0.0);
+        REQUIRE(scheme.fillSamples(kin, count, scratch, true) > 0.0);
         for (std::size_t j = 0; j < count; ++j)
         {
             CHECK(scratch.F[j].determinant() == Approx(Ja).epsilon(1e-13));
@@ -179,4 +183,21 @@ TEST_CASE("gradF sampleVolume particle: objective (a rotated, yielded configurat
     test::loadModelLibraries();
     test::checkObjectiveAfterMoves<2>(kParticleElasticState, kPlastic);
     test::checkObjectiveAfterMoves<3>(kParticleElasticState, kPlastic);
+}
+
+TEST_CASE("gradF sampleVolume particle: an elastic material without history is the paper's gradF "
+          "bit for bit",
+          "[gradF][sampleVolume]")
+{
+    test::loadModelLibraries();
+    const auto cloud = test::schemeCloud<2>(7);
+    test::SchemeFixture<2> own(cloud, "type gradF;", kNeoHookean, false, test::schemeHOverDx<2>());
+    test::SchemeFixture<2> particle(cloud, kParticle, kNeoHookean, false, test::schemeHOverDx<2>());
+    const auto x = test::deformCurrent<2>(cloud, 17);
+    CHECK(particle.forces(x) == own.forces(x));
+    CHECK(particle.energy(x) == own.energy(x));
+    // and with history it does differ (the check has teeth)
+    test::SchemeFixture<2> j2own(cloud, "type gradF;", kElastic, false, test::schemeHOverDx<2>());
+    test::SchemeFixture<2> j2particle(cloud, kParticle, kElastic, false, test::schemeHOverDx<2>());
+    CHECK(j2particle.forces(x) != j2own.forces(x));
 }
