@@ -3,9 +3,7 @@
 #include "stabilisation/gradF/MonomialTensors.hpp"
 #include "stabilisation/gradF/RegularisedInverse.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace sph
@@ -45,8 +43,9 @@ Schema GradF<D>::schema()
                        "the volume change of the stress samples: own (each sample's det F_b(a), "
                        "as the paper) or particle (every sample of a particle takes the "
                        "particle's det F_a, the F-bar method: the samples' spread stays isochoric, "
-                       "so isochoric plastic flow does not lock; docs/theory/gradF-plastic.md "
-                       "§G13)")
+                       "so isochoric plastic flow does not lock; it acts on bodies whose material "
+                       "has a plastic history, 2D and 3D; with `impenetrability` in sphSchemes, "
+                       "docs/theory/gradF-plastic.md §G13-§G14)")
                  .choices({"own", "particle"})
                  .defaultValue("own"));
 }
@@ -226,42 +225,6 @@ Mat<D> GradF<D>::deformationGradient(std::size_t a, const std::vector<Vec<D>>& x
 }
 
 template <int D>
-double GradF<D>::fillSamples(const Kinematics& kin, std::size_t count, Scratch& scratch,
-                             bool particleVolume) const
-{
-    double smallest = std::numeric_limits<double>::infinity();
-    const double Ja = kin.F.determinant();
-    for (std::size_t j = 0; j < count; ++j)
-    {
-        scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
-        const double Jb = scratch.F[j].determinant();
-        smallest = std::min(smallest, Jb);
-        if (particleVolume)
-        {
-            // An inverted sample has no F̄; it is reported and the run stops (§G13).
-            scratch.alpha[j] = Jb > 0.0 ? rootOfDimension<D>(Ja / Jb) : 1.0;
-            scratch.F[j] *= scratch.alpha[j];
-        }
-    }
-    return smallest;
-}
-
-// ∂Ψ(F̄)/∂F_b = α (P̄ − p̃ F̄^{-T}) and ∂Ψ(F̄)/∂F_a = p̃ F_a^{-T}, p̃ = tr(P̄ F̄ᵀ)/D (§G13 (G13.3)).
-template <int D>
-double GradF<D>::chainParticleVolume(std::size_t count, Scratch& scratch) const
-{
-    double pressure = 0.0;
-    for (std::size_t j = 0; j < count; ++j)
-    {
-        const Mat<D>& Fbar = scratch.F[j];
-        const double p = (scratch.P[j].array() * Fbar.array()).sum() / D;
-        pressure += scratch.w[j] * p;
-        scratch.P[j] = scratch.alpha[j] * (scratch.P[j] - p * Fbar.inverse().transpose());
-    }
-    return pressure;
-}
-
-template <int D>
 ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
                                       const ReferenceConfiguration<D>& ref, std::vector<Mat<D>>& F,
                                       std::vector<Tensor3<D>>* newK) const
@@ -367,7 +330,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 // (incl. a).
                 const std::size_t count = list.count(a);
                 const bool bar = particleVolume_ && material.hasHistory();
-                const double smallestSample = fillSamples(kin, count, scratch, bar);
+                const double smallestSample = fillSamples(kin, count, scratch, bar, bar);
                 if (bar && !(smallestSample > 0.0) && in.counts(a))
                 {
                     tally.flagJacobian(a, smallestSample);

@@ -133,10 +133,11 @@ public:
                           Scratch& scratch) const;
 
     // The count stress samples of particle a into scratch.F: F_b(a) = F_a + G_a x^r_ba, or,
-    // with particleVolume, F̄_b(a) (scratch.alpha the factors). Returns the smallest
-    // det F_b(a) (positive unless a sample is inverted, §G13).
+    // with particleVolume, F̄_b(a) (scratch.alpha the factors). With measure, returns the
+    // smallest det F_b(a) (positive unless a sample is inverted, §G13), else +inf
+    // (GradFSampleVolume.cpp).
     double fillSamples(const Kinematics& kin, std::size_t count, Scratch& scratch,
-                       bool particleVolume) const;
+                       bool particleVolume, bool measure = false) const;
 
 private:
     // sampleVolume particle: the samples' stresses P̄ at F̄_b(a) in scratch.P become the

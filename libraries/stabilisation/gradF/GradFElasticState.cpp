@@ -55,7 +55,7 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
             const Mat<D> frame = std::pow(kin.F.determinant(), 1.0 / D) * Mat<D>::Identity();
             const std::size_t first = list.begin(a);
             const double Jr = ref.F[a].determinant();
-            const double smallest = fillSamples(kin, list.count(a), scratch, particleVolume_) / Jr;
+            const double smallest = fillSamples(kin, list.count(a), scratch, particleVolume_, true) / Jr;
             if (!(smallest > 0.0))
             {
                 inverted[a] = smallest;
