@@ -103,40 +103,6 @@ DruckerPrager<D>::DruckerPrager(const Params& params, const typename Material<D>
     }
 }
 
-template <int D>
-PlasticFlow DruckerPrager<D>::returnPrincipal(Eigen::Vector3d& eps, double alpha) const
-{
-    const double K = this->law_.K;
-    const double mu = this->law_.mu;
-    const double ev = eps.sum();
-    const double opening = tensileStrength_ / K; // εt: beyond it the voids open (P9.5)
-    const Eigen::Vector3d dev = eps - Eigen::Vector3d::Constant(ev / 3.0);
-    const double rootJ2Trial = std::sqrt(2.0) * mu * dev.norm(); // √J2 = |s|/√2, s = 2μ dev ε
-    const double phiTrial = rootJ2Trial + eta_ * std::min(K * ev, tensileStrength_) - xi_ * cohesion_;
-    if (!(phiTrial > 0.0))
-    {
-        return {};
-    }
-    // (P9.3) On the capped branch p = σt does not change with εv: the cone alone returns s;
-    // accepted while the dilatancy keeps εv ≥ εt. Else (or from εv_tr ≤ εt) the linear branch.
-    double deltaGamma = phiTrial / mu;
-    double evReturned = ev - etaBar_ * deltaGamma;
-    if (!(ev > opening && evReturned >= opening))
-    {
-        deltaGamma = (rootJ2Trial + eta_ * K * ev - xi_ * cohesion_) / (mu + K * eta_ * etaBar_);
-        evReturned = ev - etaBar_ * deltaGamma;
-    }
-    // √J2 = ξc − η p ≥ 0 after the return, since p ≤ σt ≤ ξ c/η.
-    const double shearScale = std::max(1.0 - mu * deltaGamma / rootJ2Trial, 0.0);
-    const Eigen::Vector3d devReturned = shearScale * dev;
-    eps = devReturned + Eigen::Vector3d::Constant(evReturned / 3.0);
-    // τ:Δεp = s:Δe + p Δεv (P9.4), and α += √(2/3)|dev Δεp|.
-    const Eigen::Vector3d plasticDev = dev - devReturned;
-    const double p = std::min(K * evReturned, tensileStrength_);
-    const double work = 2.0 * mu * devReturned.dot(plasticDev) + p * (ev - evReturned);
-    return {deltaGamma, alpha + std::sqrt(2.0 / 3.0) * plasticDev.norm(), work};
-}
-
 template class DruckerPrager<2>;
 template class DruckerPrager<3>;
 

@@ -29,6 +29,7 @@
 // Fields: those of j2Plasticity (PlasticHistory.hpp).
 
 #include "materials/plasticity/ReturnMapPlasticity.hpp"
+#include "materials/plasticity/ReturnLanes.hpp"
 
 namespace sph
 {
@@ -58,8 +59,10 @@ public:
     DruckerPrager(const Params& params, const typename Material<D>::Args& args);
 
     // The model's part of ReturnMapPlasticity (§P9): the cone/cut-off return in principal log
-    // strains, W − Ψ(εe) = τ:Δεp, and the commit's V0 τ:Δεp.
-    Flow returnPrincipal(Eigen::Vector3d& eps, double alpha) const;
+    // strains at N points side by side (ReturnLanes.hpp), W − Ψ(εe) = τ:Δεp, and the commit's
+    // V0 τ:Δεp.
+    template <int N>
+    void returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha, FlowLanes<N>& flow) const;
     // The elastic law with the tension cut-off in it (P9.5): Hencky's, but the volumetric
     // stress p = min(K εv, σt): strain beyond σt/K opens voids that close again without
     // stress.
@@ -108,5 +111,61 @@ private:
     double tensileStrength_;
     double atRest_; // 1 − sin φ
 };
+
+template <int D>
+template <int N>
+void DruckerPrager<D>::returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha,
+                                   FlowLanes<N>& flow) const
+{
+    const double K = this->law_.K;
+    const double mu = this->law_.mu;
+    const double opening = tensileStrength_ / K; // εt: beyond it the voids open (P9.5)
+    const DeviatorLanes<N> trial(eps);
+    // Each loop over the lanes vectorises: both branches computed, one kept per lane.
+    Lane<N> phiTrial, evReturned, shearScale, deltaGamma;
+    for (int i = 0; i < N; ++i)
+    {
+        const double ev = trial.volumetric[i];
+        const double rootJ2Trial = std::sqrt(2.0) * mu * trial.norm[i]; // √J2 = |s|/√2, s = 2μ dev ε
+        phiTrial[i] = rootJ2Trial + eta_ * std::min(K * ev, tensileStrength_) - xi_ * cohesion_;
+        // (P9.3) On the capped branch p = σt does not change with εv: the cone alone returns
+        // s; accepted while the dilatancy keeps εv ≥ εt. Else (or from εv_tr ≤ εt) the linear
+        // branch.
+        const double cappedGamma = phiTrial[i] / mu;
+        const double cappedEv = ev - etaBar_ * cappedGamma;
+        const double linearGamma =
+            (rootJ2Trial + eta_ * K * ev - xi_ * cohesion_) / (mu + K * eta_ * etaBar_);
+        const bool capped = (ev > opening) & (cappedEv >= opening);
+        deltaGamma[i] = capped ? cappedGamma : linearGamma;
+        evReturned[i] = capped ? cappedEv : ev - etaBar_ * linearGamma;
+        // √J2 = ξc − η p ≥ 0 after the return, since p ≤ σt ≤ ξ c/η.
+        shearScale[i] = std::max(1.0 - mu * deltaGamma[i] / rootJ2Trial, 0.0);
+    }
+    // τ:Δεp = s:Δe + p Δεv (P9.4), and α += √(2/3)|dev Δεp|.
+    Lane<N> work = Lane<N>::Zero();
+    Lane<N> plasticNorm = Lane<N>::Zero();
+    for (int k = 0; k < 3; ++k)
+    {
+        for (int i = 0; i < N; ++i)
+        {
+            const double dev = trial.dev[k][i];
+            const double devReturned = shearScale[i] * dev;
+            const bool flows = phiTrial[i] > 0.0;
+            eps.eps[k][i] = flows ? devReturned + evReturned[i] / 3.0 : eps.eps[k][i];
+            work[i] += devReturned * (dev - devReturned);
+            plasticNorm[i] += (dev - devReturned) * (dev - devReturned);
+        }
+    }
+    for (int i = 0; i < N; ++i)
+    {
+        const double p = std::min(K * evReturned[i], tensileStrength_);
+        const double dissipation = 2.0 * mu * work[i] + p * (trial.volumetric[i] - evReturned[i]);
+        const double nextAlpha = alpha[i] + std::sqrt(2.0 / 3.0) * std::sqrt(plasticNorm[i]);
+        const bool flows = phiTrial[i] > 0.0;
+        flow.deltaGamma[i] = flows ? deltaGamma[i] : 0.0;
+        flow.alpha[i] = flows ? nextAlpha : alpha[i];
+        flow.dissipation[i] = flows ? dissipation : 0.0;
+    }
+}
 
 } // namespace sph

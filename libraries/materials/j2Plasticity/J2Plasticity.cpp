@@ -55,26 +55,6 @@ double J2Plasticity<D>::hardeningEnergy(double alpha) const
 }
 
 template <int D>
-PlasticFlow J2Plasticity<D>::returnPrincipal(Eigen::Vector3d& eps, double alpha) const
-{
-    const double ev = eps.sum();
-    const Eigen::Vector3d dev = eps - Eigen::Vector3d::Constant(ev / 3.0);
-    const double mu = this->elastic_.mu;
-    const double qTrial = std::sqrt(1.5) * 2.0 * mu * dev.norm();
-    if (!(qTrial > yieldStress(alpha)))
-    {
-        return {};
-    }
-    double deltaGamma = (qTrial - sigmaY0_ - H_ * alpha) / (3.0 * mu + H_);
-    if (sigmaY0_ + H_ * (alpha + deltaGamma) < 0.0)
-    {
-        deltaGamma = qTrial / (3.0 * mu); // softening exhausted: σy = 0, s = 0
-    }
-    eps = dev * (1.0 - 3.0 * mu * deltaGamma / qTrial) + Eigen::Vector3d::Constant(ev / 3.0);
-    return flowOf(deltaGamma, alpha);
-}
-
-template <int D>
 PlasticFlow J2Plasticity<D>::returnUniaxial(double& eps, double alpha) const
 {
     // §P6: Φ = |τ| − σy(α) with τ = E ε; ε ← ε − Δγ sgn τ_tr.

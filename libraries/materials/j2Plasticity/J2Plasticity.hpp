@@ -23,6 +23,7 @@
 // written level) and yielding (1 where the particle flows plastically at that level).
 
 #include "materials/plasticity/ReturnMapPlasticity.hpp"
+#include "materials/plasticity/ReturnLanes.hpp"
 
 namespace sph
 {
@@ -41,8 +42,9 @@ public:
     double hardeningEnergy(double alpha) const;
 
     // The model's part of ReturnMapPlasticity: the radial return (§P5) in principal log
-    // strains, the bar's return (§P6), W − Ψ(εe) = Ψh(α) + σy0 Δγ, and the commit's V0 σy0 Δγ.
-    Flow returnPrincipal(Eigen::Vector3d& eps, double alpha) const;
+    // strains at N points side by side (ReturnLanes.hpp), the bar's return (§P6), W − Ψ(εe) = Ψh(α) + σy0 Δγ, and the commit's V0 σy0 Δγ.
+    template <int N>
+    void returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha, FlowLanes<N>& flow) const;
     Flow returnUniaxial(double& eps, double alpha) const;
     double extraEnergy(const Flow& flow) const { return hardeningEnergy(flow.alpha) + flow.dissipation; }
     // This product order (V0 σy0 first) keeps the energy audit bit-identical to j2Plasticity
@@ -59,5 +61,32 @@ private:
     double sigmaY0_;
     double H_;
 };
+
+template <int D>
+template <int N>
+void J2Plasticity<D>::returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha, FlowLanes<N>& flow) const
+{
+    const double mu = this->elastic_.mu;
+    const DeviatorLanes<N> trial(eps);
+    for (int i = 0; i < N; ++i)
+    {
+        const double qTrial = std::sqrt(1.5) * 2.0 * mu * trial.norm[i];
+        const bool flows = qTrial > yieldStress(alpha[i]);
+        const double hardened = (qTrial - sigmaY0_ - H_ * alpha[i]) / (3.0 * mu + H_);
+        // Softening exhausted: σy = 0, s = 0.
+        const double deltaGamma =
+            sigmaY0_ + H_ * (alpha[i] + hardened) < 0.0 ? qTrial / (3.0 * mu) : hardened;
+        const double shearScale = 1.0 - 3.0 * mu * deltaGamma / qTrial;
+        const double ev = trial.volumetric[i];
+        for (int k = 0; k < 3; ++k)
+        {
+            eps.eps[k][i] = flows ? trial.dev[k][i] * shearScale + ev / 3.0 : eps.eps[k][i];
+        }
+        const Flow f = flowOf(flows ? deltaGamma : 0.0, alpha[i]);
+        flow.deltaGamma[i] = f.deltaGamma;
+        flow.alpha[i] = f.alpha;
+        flow.dissipation[i] = f.dissipation;
+    }
+}
 
 } // namespace sph

@@ -4,11 +4,12 @@
 // principal log strains, the update of Cp⁻¹ from the returned strains, P = τ F⁻ᵀ, the
 // evaluation from a particle's or a gradF sample's committed history (HistoryOf), the commit,
 // the linearised correction, the wave-speed bound and the display fields. A model adds only
-// what is its own, as non-virtual members of Model (CRTP: the return is inlined in the loop
-// that runs once per particle and gradF sample):
+// what is its own, as non-virtual members of Model (CRTP: the return is inlined in the loops
+// over eight points side by side, ReturnMapLanes.hpp, that every return runs through):
 //
-//   Flow returnPrincipal(Eigen::Vector3d& eps, double alpha) const;  2D/3D: the return in
-//       principal log strains (eps: trial in, returned out; alpha: the committed α)
+//   template <int N> void returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha,
+//       FlowLanes<N>& flow) const;  2D/3D: the return in principal log strains at N points
+//       side by side (ReturnLanes.hpp; eps: trial in, returned out; alpha: the committed α)
 //   Flow returnUniaxial(double& eps, double alpha) const;            1D bar (only if the
 //       model is registered in 1D)
 //   double extraEnergy(const Flow& flow) const;   W − Ψ(εe) when the point has flowed (now or
@@ -22,6 +23,7 @@
 
 #include "materials/LogarithmicElasticity.hpp"
 #include "materials/plasticity/PlasticHistory.hpp"
+#include "materials/plasticity/ReturnLanes.hpp"
 #include "materials/plasticity/ReturnMemo.hpp"
 
 namespace sph
@@ -46,7 +48,6 @@ public:
     };
     // flow = false: the trial state (the elastic predictor) only.
     Result returnMap(const Mat<D>& F, const State& committed, bool wantNext, bool flow = true) const;
-
     double energy(const Mat<D>& F) const override { return returnMap(F, {}, false).energy; }
     Mat<D> stress(const Mat<D>& F) const override { return returnMap(F, {}, false).P; }
     double waveSpeed(const Mat<D>& F) const override
@@ -155,9 +156,38 @@ private:
     // waveModulus: M + max |τ| of the return at F (particleReturn's, or returnMap's).
     double waveSpeedOf(double waveModulus, const Mat<D>& stretched) const;
 
+    // The return map at N points side by side (ReturnMapLanes.hpp): returnMap's steps over
+    // `count` ≤ N points with their packed committed states (stride apart); the lanes beyond
+    // `count` are computed on the virgin state at F = I and ignored.
+    template <int N>
+    struct LanesResult
+    {
+        Lane<N> P[D][D];
+        Lane<N> energy;
+        FlowLanes<N> flow;
+        Lane<N> waveModulus;
+        Lane<N> next[State::packedSize]; // (wantNext) the committed state where it does not flow
+    };
+    template <int N>
+    void returnInLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count,
+                       bool flow, bool wantNext, LanesResult<N>& out) const;
+    // The principal form of N matrices be (in 2D with their zz components).
+    template <int N>
+    static void principalOf(const Lane<N> (&be)[D][D], const Lane<N>& beZZ, PrincipalLanes<N, D>& out);
+    // evaluate's two paths, eight points at a time from `first` (i in evaluate).
+    void evaluateParticlesInLanes(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t count,
+                                  std::size_t firstParticle) const;
+    void evaluateSamplesInLanes(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t count,
+                                const HistoryOf& history) const;
+    static constexpr std::size_t lanes = 8; // one AVX-512 register of doubles
+
     // The memo of each particle's last return: the time step and the commit reuse the force
     // evaluation's (written by the one thread that evaluates the particle).
     typename ReturnMemo<D>::Entry particleReturn(std::size_t a, const Mat<D>& F, const State& s) const;
+    // The same for the particles first, …, first + n − 1 (n ≤ lanes) at F[0 … n − 1]: those
+    // the memo does not hold are computed together, in one set of lanes.
+    void particleReturns(const Mat<D>* F, std::size_t first, std::size_t n,
+                         typename ReturnMemo<D>::Entry* out) const;
 
     PlasticHistory<D> history_;
     mutable ReturnMemo<D> memo_;
@@ -210,25 +240,36 @@ ReturnMapPlasticity<D, Model>::returnMap(const Mat<D>& F, const State& committed
     }
     else
     {
-        PrincipalStrain<D> p =
-            principalStrain<D>(F * committed.inversePlastic * F.transpose(), committed.inversePlasticZZ);
-        if (flow)
+        // The point in the first of eight lanes (the others idle): every return of a point
+        // runs the same instructions on its lane, one point or eight, so a point gives the
+        // same digits whichever path evaluates it (the memo and restarts rely on it; a
+        // one-lane instantiation would not: the compiler fuses multiply-adds differently in
+        // scalar and vector code). In 3D eight lanes of Jacobi rotations cost about what the
+        // one-point eigen-solver did.
+        double packed[State::packedSize];
+        committed.pack(packed);
+        LanesResult<lanes> one;
+        returnInLanes<lanes>(&F, packed, State::packedSize, 1, flow, wantNext, one);
+        for (int k = 0; k < D; ++k)
         {
-            r.flow = model().returnPrincipal(p.eps, committed.alpha);
+            for (int l = 0; l < D; ++l)
+            {
+                r.P(k, l) = one.P[k][l][0];
+            }
         }
-        const Eigen::Vector3d tau = kirchhoff(p.eps);
-        const Mat<D> Finv = F.inverse();
-        r.P = p.assemble(tau) * Finv.transpose();
-        r.waveModulus = waveModulusAt(p.eps) + tau.cwiseAbs().maxCoeff();
-        r.energy = elasticEnergy(p.eps);
+        r.energy = one.energy[0];
+        r.flow = {one.flow.deltaGamma[0], one.flow.alpha[0], one.flow.dissipation[0]};
+        r.waveModulus = one.waveModulus[0];
         if (wantNext && r.flow.deltaGamma > 0.0)
         {
-            // (§P4 step 4) Cp⁻¹ = F⁻¹ be F⁻ᵀ of the returned be = Σ exp(2εᵢ) nᵢ⊗nᵢ.
-            const Eigen::Vector3d be = (2.0 * p.eps).array().exp();
-            const Mat<D> Cp = Finv * p.assemble(be) * Finv.transpose();
-            r.next.inversePlastic = 0.5 * (Cp + Cp.transpose());
-            r.next.inversePlasticZZ = D == 2 ? be[2] : 1.0;
+            for (std::size_t c = 0; c < State::packedSize; ++c)
+            {
+                packed[c] = one.next[c][0];
+            }
+            r.next = State::unpack(packed);
         }
+        r.next.alpha = r.flow.alpha;
+        return r;
     }
     if (!(r.flow.deltaGamma > 0.0))
     {
@@ -247,35 +288,51 @@ template <int D, class Model>
 void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double* psi,
                                              std::size_t n, HistoryOf history) const
 {
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < n;)
     {
-        if (!history.perSample())
+        if constexpr (D >= 2)
         {
-            const std::size_t a = history.particle(i);
-            const State s = state(a);
-            const bool flow = !history.trialAround;
-            const Result r = returnMap(F[i], s, flow, flow);
-            if (flow)
+            const std::size_t count = std::min(lanes, n - i);
+            if (history.perSample())
             {
-                memo_.store(a, F[i], s, {r.waveModulus, r.flow, r.next});
+                HistoryOf chunk = history;
+                chunk.states += i * history.stride;
+                if (history.next)
+                {
+                    chunk.next += i * history.stride;
+                    chunk.dissipation += i;
+                }
+                evaluateSamplesInLanes(F + i, P + i, psi ? psi + i : nullptr, count, chunk);
+                i += count;
+                continue;
             }
-            P[i] = r.P;
-            if (psi)
+            if (!history.trialAround)
             {
-                psi[i] = r.energy;
+                evaluateParticlesInLanes(F + i, P + i, psi ? psi + i : nullptr, count,
+                                         history.particle(i));
+                i += count;
+                continue;
             }
-            continue;
         }
-        const double* committed = history.states + i * history.stride;
-        const bool wantNext = history.next != nullptr;
-        const Result r = returnMap(F[i], State::unpack(committed), wantNext);
+        // The bar, and the trial (elastic predictor) around one particle: point by point.
+        const bool perSample = history.perSample();
+        const State s = perSample ? State::unpack(history.states + i * history.stride)
+                                  : state(history.particle(i));
+        const bool flow = perSample || !history.trialAround;
+        const bool wantNext = perSample ? history.next != nullptr : flow;
+        const Result r = returnMap(F[i], s, wantNext, flow);
         P[i] = r.P;
         if (psi)
         {
             psi[i] = r.energy;
         }
-        if (wantNext)
+        if (!perSample && flow)
         {
+            memo_.store(history.particle(i), F[i], s, {r.waveModulus, r.flow, r.next});
+        }
+        if (perSample && wantNext)
+        {
+            const double* committed = history.states + i * history.stride;
             double* next = history.next + i * history.stride;
             if (r.flow.deltaGamma > 0.0)
             {
@@ -286,6 +343,83 @@ void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double*
                 std::copy(committed, committed + State::packedSize, next);
             }
             history.dissipation[i] = r.flow.dissipation;
+        }
+        ++i;
+    }
+}
+
+template <int D, class Model>
+void ReturnMapPlasticity<D, Model>::evaluateParticlesInLanes(const Mat<D>* F, Mat<D>* P,
+                                                             double* psi, std::size_t count,
+                                                             std::size_t firstParticle) const
+{
+    if constexpr (D >= 2)
+    {
+        double states[lanes * State::packedSize];
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            state(firstParticle + i).pack(states + i * State::packedSize);
+        }
+        LanesResult<lanes> out;
+        returnInLanes<lanes>(F, states, State::packedSize, count, true, true, out);
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            for (int k = 0; k < D; ++k)
+            {
+                for (int l = 0; l < D; ++l)
+                {
+                    P[i](k, l) = out.P[k][l][i];
+                }
+            }
+            if (psi)
+            {
+                psi[i] = out.energy[i];
+            }
+            const Flow flow{out.flow.deltaGamma[i], out.flow.alpha[i], out.flow.dissipation[i]};
+            double next[State::packedSize];
+            for (std::size_t c = 0; c < State::packedSize; ++c)
+            {
+                next[c] = out.next[c][i];
+            }
+            State nextState = State::unpack(next);
+            nextState.alpha = flow.alpha;
+            memo_.store(firstParticle + i, F[i], State::unpack(states + i * State::packedSize),
+                        {out.waveModulus[i], flow, nextState});
+        }
+    }
+}
+
+template <int D, class Model>
+void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<D>* P, double* psi,
+                                                           std::size_t count,
+                                                           const HistoryOf& history) const
+{
+    if constexpr (D >= 2)
+    {
+        const bool wantNext = history.next != nullptr;
+        LanesResult<lanes> out;
+        returnInLanes<lanes>(F, history.states, history.stride, count, true, wantNext, out);
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            for (int k = 0; k < D; ++k)
+            {
+                for (int l = 0; l < D; ++l)
+                {
+                    P[i](k, l) = out.P[k][l][i];
+                }
+            }
+            if (psi)
+            {
+                psi[i] = out.energy[i];
+            }
+            if (wantNext)
+            {
+                for (std::size_t c = 0; c < State::packedSize; ++c)
+                {
+                    history.next[i * history.stride + c] = out.next[c][i];
+                }
+                history.dissipation[i] = out.flow.dissipation[i];
+            }
         }
     }
 }
@@ -349,6 +483,57 @@ typename ReturnMemo<D>::Entry ReturnMapPlasticity<D, Model>::particleReturn(std:
 }
 
 template <int D, class Model>
+void ReturnMapPlasticity<D, Model>::particleReturns(const Mat<D>* F, std::size_t first,
+                                                    std::size_t n,
+                                                    typename ReturnMemo<D>::Entry* out) const
+{
+    if constexpr (D == 1)
+    {
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            out[i] = particleReturn(first + i, F[i], state(first + i));
+        }
+    }
+    else
+    {
+        std::size_t missing[lanes];
+        Mat<D> missingF[lanes];
+        double states[lanes * State::packedSize];
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const State s = state(first + i);
+            if (!memo_.find(first + i, F[i], s, out[i]))
+            {
+                missing[count] = i;
+                missingF[count] = F[i];
+                s.pack(states + count * State::packedSize);
+                ++count;
+            }
+        }
+        if (count == 0)
+        {
+            return;
+        }
+        LanesResult<lanes> r;
+        returnInLanes<lanes>(missingF, states, State::packedSize, count, true, true, r);
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            double next[State::packedSize];
+            for (std::size_t c = 0; c < State::packedSize; ++c)
+            {
+                next[c] = r.next[c][j];
+            }
+            typename ReturnMemo<D>::Entry& e = out[missing[j]];
+            e.waveModulus = r.waveModulus[j];
+            e.flow = {r.flow.deltaGamma[j], r.flow.alpha[j], r.flow.dissipation[j]};
+            e.next = State::unpack(next);
+            e.next.alpha = e.flow.alpha;
+        }
+    }
+}
+
+template <int D, class Model>
 double ReturnMapPlasticity<D, Model>::waveSpeedOf(double waveModulus, const Mat<D>& stretched) const
 {
     // (P2.5): the elastic modulus bounds the elastoplastic one; the stretch sets the scale.
@@ -362,11 +547,15 @@ double ReturnMapPlasticity<D, Model>::maxWaveSpeedSinceReference(const Mat<D>* F
                                                                  std::size_t first) const
 {
     double c = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
+    typename ReturnMemo<D>::Entry e[lanes];
+    for (std::size_t i = 0; i < n; i += lanes)
     {
-        const std::size_t a = first + i;
-        const double modulus = particleReturn(a, F[i], state(a)).waveModulus;
-        c = std::max(c, waveSpeedOf(modulus, Mat<D>(F[i] * Fr[i].inverse())));
+        const std::size_t count = std::min(lanes, n - i);
+        particleReturns(F + i, first + i, count, e);
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            c = std::max(c, waveSpeedOf(e[j].waveModulus, Mat<D>(F[i + j] * Fr[i + j].inverse())));
+        }
     }
     return c;
 }
@@ -376,10 +565,15 @@ double ReturnMapPlasticity<D, Model>::maxWaveSpeed(const Mat<D>* F, std::size_t 
                                                    std::size_t first) const
 {
     double c = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
+    typename ReturnMemo<D>::Entry e[lanes];
+    for (std::size_t i = 0; i < n; i += lanes)
     {
-        const std::size_t a = first + i;
-        c = std::max(c, waveSpeedOf(particleReturn(a, F[i], state(a)).waveModulus, F[i]));
+        const std::size_t count = std::min(lanes, n - i);
+        particleReturns(F + i, first + i, count, e);
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            c = std::max(c, waveSpeedOf(e[j].waveModulus, F[i + j]));
+        }
     }
     return c;
 }
@@ -424,17 +618,23 @@ double ReturnMapPlasticity<D, Model>::commit(const Mat<D>* F, const double* V0, 
                                              std::size_t n)
 {
     double dissipated = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
+    typename ReturnMemo<D>::Entry e[lanes];
+    for (std::size_t i = 0; i < n; i += lanes)
     {
-        const std::size_t a = first + i;
-        const typename ReturnMemo<D>::Entry r = particleReturn(a, F[i], state(a));
-        if (r.flow.deltaGamma > 0.0)
+        const std::size_t count = std::min(lanes, n - i);
+        particleReturns(F + i, first + i, count, e);
+        for (std::size_t j = 0; j < count; ++j)
         {
-            history_.store(a, r.next);
-            dissipated += model().dissipated(V0[i], r.flow);
+            if (e[j].flow.deltaGamma > 0.0)
+            {
+                history_.store(first + i + j, e[j].next);
+                dissipated += model().dissipated(V0[i + j], e[j].flow);
+            }
         }
     }
     return dissipated;
 }
 
 } // namespace sph
+
+#include "materials/plasticity/ReturnMapLanes.hpp"

@@ -1,0 +1,396 @@
+#pragma once
+// ReturnMapPlasticity's evaluation of a body's stress samples in lanes (ReturnLanes.hpp): the
+// same steps as returnMap, written over N samples at once. Included at the end of
+// ReturnMapPlasticity.hpp, whose member it defines.
+//
+// Per lane, as returnMap (docs/theory/plasticity.md §P1–§P4):
+//   be = F Cp⁻¹ Fᵀ (in-plane; in 2D be_zz = Cp⁻¹_zz) = Σ λᵢ² nᵢ⊗nᵢ;  εᵢ = ½ ln λᵢ²;
+//   the model's return;  τ(ε);  P = (Σ τᵢ nᵢ⊗nᵢ) F⁻ᵀ;  W = Ψ(ε) (+ the model's extra energy
+//   once the point has flowed);  flowing: Cp⁻¹ = F⁻¹ (Σ exp(2εᵢ) nᵢ⊗nᵢ) F⁻ᵀ, symmetrised (and
+//   in 2D be_zz = exp(2ε₂)).
+// The principal form: in 2D principalStrain<2>'s closed form; in 3D cyclic Jacobi rotations
+// (principalLanes below), which keep every digit at a double eigenvalue, where the closed form
+// loses half of them. The logarithms are the C library's, one lane at a time (Eigen's
+// vectorised logarithm differs from it in the last bits, and GCC 12 warns inside its AVX-512
+// code). The products are grouped as written here, not as Eigen's matrix products in
+// returnMap, so a sample's result here and returnMap's agree to round-off (test:
+// numericsTests "[lanes]").
+
+namespace sph
+{
+
+namespace lanes
+{
+
+// The index of (i, j) in a symmetric 3×3 stored as (00, 11, 22, 01, 02, 12).
+constexpr int symmetric(int i, int j)
+{
+    return i == j ? i : (i + j == 1 ? 3 : (i + j == 2 ? 4 : 5));
+}
+
+// One Jacobi rotation in the (p, q) plane that zeroes a_pq, lane by lane (Golub & Van Loan
+// §8.5: t = sgn θ/(|θ| + √(θ² + 1)), θ = (a_qq − a_pp)/(2 a_pq); t = 0 where a_pq = 0).
+template <int N, int p, int q>
+inline void rotate(Lane<N> (&a)[6], Lane<N> (&v)[3][3], const Lane<N>& done)
+{
+    constexpr int r = 3 - p - q;
+    constexpr int pq = symmetric(p, q);
+    constexpr int rp = symmetric(r, p);
+    constexpr int rq = symmetric(r, q);
+    for (int i = 0; i < N; ++i)
+    {
+        const double x = a[pq][i];
+        const double theta = (a[q][i] - a[p][i]) / (2.0 * x);
+        const double rotation =
+            std::copysign(1.0, theta) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+        // A lane already converged (done ≠ 0) stays as it is to the bit: t = 0 and a_pq kept,
+        // so that a point gives the same digits in any batch (one lane or eight).
+        const bool keep = x == 0.0 || done[i] != 0.0;
+        const double t = keep ? 0.0 : rotation;
+        const double c = 1.0 / std::sqrt(t * t + 1.0);
+        const double s = t * c;
+        a[p][i] -= t * x;
+        a[q][i] += t * x;
+        a[pq][i] = keep ? x : 0.0;
+        const double arp = a[rp][i];
+        const double arq = a[rq][i];
+        a[rp][i] = c * arp - s * arq;
+        a[rq][i] = s * arp + c * arq;
+        for (int k = 0; k < 3; ++k)
+        {
+            const double vp = v[k][p][i];
+            const double vq = v[k][q][i];
+            v[k][p][i] = c * vp - s * vq;
+            v[k][q][i] = s * vp + c * vq;
+        }
+    }
+}
+
+// The principal form of N symmetric 3×3 matrices a = (00, 11, 22, 01, 02, 12): sweeps of
+// rotations until every lane's off-diagonal part is below 1e-17 of its diagonal (near the
+// identity, as be is, two to four sweeps); a lane that has converged is left alone.
+template <int N>
+void principalForm(Lane<N> (&matrix)[6], Lane<N> (&vectors)[3][3])
+{
+    // Local copies: the rotations vectorise only where the compiler sees that the matrix and
+    // the vectors cannot overlap.
+    Lane<N> a[6];
+    Lane<N> v[3][3];
+    for (int k = 0; k < 6; ++k)
+    {
+        a[k] = matrix[k];
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            v[i][k] = Lane<N>::Constant(i == k ? 1.0 : 0.0);
+        }
+    }
+    for (int sweep = 0; sweep < 16; ++sweep)
+    {
+        Lane<N> done;
+        for (int i = 0; i < N; ++i)
+        {
+            const double off = a[3][i] * a[3][i] + a[4][i] * a[4][i] + a[5][i] * a[5][i];
+            const double diagonal = a[0][i] * a[0][i] + a[1][i] * a[1][i] + a[2][i] * a[2][i];
+            done[i] = off > 1e-34 * diagonal ? 0.0 : 1.0;
+        }
+        if (done.minCoeff() != 0.0)
+        {
+            break;
+        }
+        rotate<N, 0, 1>(a, v, done);
+        rotate<N, 0, 2>(a, v, done);
+        rotate<N, 1, 2>(a, v, done);
+    }
+    for (int k = 0; k < 6; ++k)
+    {
+        matrix[k] = a[k];
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+        for (int k = 0; k < 3; ++k)
+        {
+            vectors[i][k] = v[i][k];
+        }
+    }
+}
+
+} // namespace lanes
+
+template <int D, class Model>
+template <int N>
+void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double* states,
+                                                  std::size_t stride, std::size_t count, bool flow,
+                                                  bool wantNext, LanesResult<N>& out) const
+{
+    static_assert(D == 2 || D == 3, "the bar (1D) has its own return");
+    constexpr int zz = D * D;                       // 2D: Cp⁻¹_zz's place in a packed state
+    constexpr int alphaAt = State::packedSize - 1; // α's
+    // Gather: F, Cp⁻¹ (all D² components, as a packed state holds them), zz and α. Unused
+    // lanes hold the virgin state at F = I, where every branch is finite.
+    Lane<N> f[D][D], committed[State::packedSize];
+    for (int i = 0; i < N; ++i)
+    {
+        const bool used = static_cast<std::size_t>(i) < count;
+        const Mat<D> Fi = used ? F[i] : Mat<D>::Identity();
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                f[k][l][i] = Fi(k, l);
+            }
+        }
+        for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
+        {
+            const double virgin = c == alphaAt ? 0.0 : (c == zz || (c < zz && c / D == c % D)) ? 1.0 : 0.0;
+            committed[c][i] = used ? states[i * stride + c] : virgin;
+        }
+    }
+    const Lane<N>& alpha = committed[alphaAt];
+
+    // be = (F Cp⁻¹) Fᵀ.
+    Lane<N> be[D][D];
+    for (int i = 0; i < N; ++i)
+    {
+        double t[D][D];
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                t[k][l] = 0.0;
+                for (int m = 0; m < D; ++m)
+                {
+                    t[k][l] += f[k][m][i] * committed[m * D + l][i];
+                }
+            }
+        }
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                be[k][l][i] = 0.0;
+                for (int m = 0; m < D; ++m)
+                {
+                    be[k][l][i] += t[k][m] * f[l][m][i];
+                }
+            }
+        }
+    }
+    PrincipalLanes<N, D> principal;
+    principalOf<N>(be, committed[D == 2 ? zz : alphaAt], principal);
+
+    if (flow)
+    {
+        model().template returnLanes<N>(principal.strain, alpha, out.flow);
+    }
+    else
+    {
+        out.flow.deltaGamma = Lane<N>::Zero();
+        out.flow.alpha = alpha;
+        out.flow.dissipation = Lane<N>::Zero();
+    }
+
+    // F⁻¹ by cofactors (the transposed cofactor matrix over det F).
+    Lane<N> finv[D][D];
+    for (int i = 0; i < N; ++i)
+    {
+        if constexpr (D == 2)
+        {
+            const double invDet = 1.0 / (f[0][0][i] * f[1][1][i] - f[0][1][i] * f[1][0][i]);
+            finv[0][0][i] = f[1][1][i] * invDet;
+            finv[0][1][i] = -f[0][1][i] * invDet;
+            finv[1][0][i] = -f[1][0][i] * invDet;
+            finv[1][1][i] = f[0][0][i] * invDet;
+        }
+        else
+        {
+            double cof[3][3];
+            for (int k = 0; k < 3; ++k)
+            {
+                for (int l = 0; l < 3; ++l)
+                {
+                    const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+                    const int l1 = (l + 1) % 3, l2 = (l + 2) % 3;
+                    cof[k][l] = f[k1][l1][i] * f[k2][l2][i] - f[k1][l2][i] * f[k2][l1][i];
+                }
+            }
+            const double invDet =
+                1.0 / (f[0][0][i] * cof[0][0] + f[0][1][i] * cof[0][1] + f[0][2][i] * cof[0][2]);
+            for (int k = 0; k < 3; ++k)
+            {
+                for (int l = 0; l < 3; ++l)
+                {
+                    finv[k][l][i] = cof[l][k] * invDet;
+                }
+            }
+        }
+    }
+
+    // τ, P = S F⁻ᵀ with S = Σ τₖ nₖ⊗nₖ, W and the wave modulus M + max |τ| (P2.5).
+    const auto& v = principal.vectors;
+    for (int i = 0; i < N; ++i)
+    {
+        const Eigen::Vector3d eps = principal.strain.point(i);
+        const Eigen::Vector3d tau = kirchhoff(eps);
+        double S[D][D];
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                S[k][l] = 0.0;
+                for (int m = 0; m < D; ++m)
+                {
+                    S[k][l] += tau[m] * v[k][m][i] * v[l][m][i];
+                }
+            }
+        }
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                out.P[k][l][i] = 0.0;
+                for (int m = 0; m < D; ++m)
+                {
+                    out.P[k][l][i] += S[k][m] * finv[l][m][i];
+                }
+            }
+        }
+        out.waveModulus[i] = waveModulusAt(eps) + tau.cwiseAbs().maxCoeff();
+        out.energy[i] = elasticEnergy(eps);
+        if (alpha[i] > 0.0 || out.flow.deltaGamma[i] > 0.0)
+        {
+            // Without plastic flow (now or before) the energy stays Hencky's.
+            out.energy[i] += model().extraEnergy(
+                Flow{out.flow.deltaGamma[i], out.flow.alpha[i], out.flow.dissipation[i]});
+        }
+    }
+    if (!wantNext)
+    {
+        return;
+    }
+
+    // The states to commit: where the point flows the returned be pulled back (§P4 step 4),
+    // elsewhere the committed state.
+    for (int i = 0; i < N; ++i)
+    {
+        for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
+        {
+            out.next[c][i] = committed[c][i];
+        }
+        if (!(out.flow.deltaGamma[i] > 0.0))
+        {
+            continue;
+        }
+        const Eigen::Vector3d stretch = (2.0 * principal.strain.point(i)).array().exp();
+        // Cp⁻¹ = (F⁻¹ B) F⁻ᵀ with B = Σ exp(2εₖ) nₖ⊗nₖ, then ½ (C + Cᵀ).
+        double B[D][D], T[D][D], C[D][D];
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                B[k][l] = 0.0;
+                for (int m = 0; m < D; ++m)
+                {
+                    B[k][l] += stretch[m] * v[k][m][i] * v[l][m][i];
+                }
+            }
+        }
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                T[k][l] = 0.0;
+                for (int m = 0; m < D; ++m)
+                {
+                    T[k][l] += finv[k][m][i] * B[m][l];
+                }
+            }
+        }
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                C[k][l] = 0.0;
+                for (int m = 0; m < D; ++m)
+                {
+                    C[k][l] += T[k][m] * finv[l][m][i];
+                }
+            }
+        }
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                out.next[k * D + l][i] = k == l ? C[k][k] : 0.5 * (C[k][l] + C[l][k]);
+            }
+        }
+        if constexpr (D == 2)
+        {
+            out.next[zz][i] = stretch[2];
+        }
+        out.next[alphaAt][i] = out.flow.alpha[i];
+    }
+}
+
+template <int D, class Model>
+template <int N>
+void ReturnMapPlasticity<D, Model>::principalOf(const Lane<N> (&be)[D][D], const Lane<N>& beZZ,
+                                                PrincipalLanes<N, D>& out)
+{
+    if constexpr (D == 2)
+    {
+        // principalStrain<2>'s closed form: eigenvalues m ± r; the eigenvector of m + r from
+        // the row of (be − λ I) with the larger norm.
+        // (Local arrays, not `out`'s: the loop vectorises only where it cannot alias `be`.)
+        const Lane<N> b00 = be[0][0], b01 = be[0][1], b10 = be[1][0], b11 = be[1][1];
+        Lane<N> mean, radius, cosine, sine;
+        for (int i = 0; i < N; ++i)
+        {
+            const double m = 0.5 * (b00[i] + b11[i]);
+            const double d = 0.5 * (b00[i] - b11[i]);
+            const double b = 0.5 * (b01[i] + b10[i]);
+            const double r = std::sqrt(d * d + b * b);
+            const double vx = d >= 0.0 ? d + r : b;
+            const double vy = d >= 0.0 ? b : r - d;
+            const double length = std::sqrt(vx * vx + vy * vy);
+            mean[i] = m;
+            radius[i] = r;
+            cosine[i] = r > 0.0 ? vx / length : 1.0;
+            sine[i] = r > 0.0 ? vy / length : 0.0;
+        }
+        out.vectors[0][0] = cosine;
+        out.vectors[1][0] = sine;
+        out.vectors[0][1] = -sine;
+        out.vectors[1][1] = cosine;
+        for (int i = 0; i < N; ++i)
+        {
+            out.strain.eps[0][i] = 0.5 * std::log(mean[i] + radius[i]);
+            out.strain.eps[1][i] = 0.5 * std::log(mean[i] - radius[i]);
+            out.strain.eps[2][i] = 0.5 * std::log(beZZ[i]);
+        }
+    }
+    else
+    {
+        // The symmetric part, as principalStrain<3> takes it.
+        Lane<N> a[6];
+        for (int k = 0; k < 3; ++k)
+        {
+            a[k] = be[k][k];
+        }
+        a[3] = 0.5 * (be[0][1] + be[1][0]);
+        a[4] = 0.5 * (be[0][2] + be[2][0]);
+        a[5] = 0.5 * (be[1][2] + be[2][1]);
+        lanes::principalForm<N>(a, out.vectors);
+        for (int k = 0; k < 3; ++k)
+        {
+            for (int i = 0; i < N; ++i)
+            {
+                out.strain.eps[k][i] = 0.5 * std::log(a[k][i]);
+            }
+        }
+    }
+}
+
+} // namespace sph

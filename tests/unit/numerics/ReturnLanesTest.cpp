@@ -1,0 +1,282 @@
+// The returns in lanes (libraries/materials/plasticity/ReturnLanes.hpp, ReturnMapLanes.hpp).
+// Every return of a plastic material runs the same code, eight points at a time (a particle's
+// stress samples, a chunk of particles) or one at a time (returnMap: the wave speed or the
+// commit of a particle the memo does not hold, e.g. after a restart). A point must give the
+// same digits either way, or a restarted run would not repeat the run it continues:
+//   - eight at a time = one at a time, bit for bit (wave speeds and committed states with and
+//     without the memo of the force evaluation), and a body's samples = its particles, bit
+//     for bit;
+//   - elastic samples are `hencky`'s to round-off (an independent path: Eigen's eigen-solver
+//     where the lanes use Jacobi rotations in 3D), also at a double eigenvalue (uniaxial).
+// On every branch of the returns: elastic points, flowing ones, the cone and the apex of
+// druckerPrager (also a cohesionless one pulled apart), j2Plasticity's hardening and its
+// exhausted softening; over counts that leave the last chunk partly empty. The returns
+// themselves are checked against hand-computed cases in DruckerPragerTest and PlasticityTest.
+#include "numerics/NumericsSupport.hpp"
+
+#include "materials/plasticity/PlasticHistory.hpp"
+
+#include <cstring>
+
+using namespace sph;
+
+namespace
+{
+// A random plastic state: Cp⁻¹ = Fp⁻¹ Fp⁻ᵀ of a random Fp near I, zz and α.
+template <int D>
+PlasticState<D> randomState(std::mt19937& random, double amplitude)
+{
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    Mat<D> Fp = Mat<D>::Identity();
+    for (int i = 0; i < D; ++i)
+    {
+        for (int j = 0; j < D; ++j)
+        {
+            Fp(i, j) += amplitude * uniform(random);
+        }
+    }
+    const Mat<D> inverse = Fp.inverse();
+    const Mat<D> Cp = inverse * inverse.transpose();
+    PlasticState<D> s;
+    s.inversePlastic = 0.5 * (Cp + Cp.transpose());
+    s.inversePlasticZZ = D == 2 ? 1.0 + amplitude * uniform(random) : 1.0;
+    s.alpha = uniform(random) > 0.0 ? amplitude * (1.0 + uniform(random)) : 0.0;
+    return s;
+}
+
+// Makes a packed state particle a's committed one (the restart fields of PlasticHistory).
+template <int D>
+void setCommitted(ParticleFields<D>& fields, std::size_t a, const double* packed)
+{
+    const auto set = [&](const char* name, const double* values)
+    {
+        const auto* field = fields.find(name);
+        REQUIRE(field != nullptr);
+        field->array->set(a, values);
+    };
+    set("inversePlasticCauchyGreen", packed);
+    if constexpr (D == 2)
+    {
+        set("inversePlasticCauchyGreenZZ", packed + 4);
+    }
+    set("equivalentPlasticStrain", packed + PlasticState<D>::packedSize - 1);
+}
+
+template <class T>
+bool sameBits(const T& a, const T& b)
+{
+    return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+// `count` random F around `centre` (spread `amplitude`) and random committed states (virgin
+// ones with uniaxial F, a stretch along a random axis: in 3D be has a double eigenvalue).
+template <int D>
+struct RandomPoints
+{
+    std::vector<Mat<D>> F;
+    std::vector<double> states; // packed, PlasticState<D>::packedSize each
+
+    RandomPoints(const Mat<D>& centre, double amplitude, std::size_t count, unsigned seed,
+                 bool uniaxial)
+        : F(count), states(count * PlasticState<D>::packedSize)
+    {
+        std::mt19937 random(seed);
+        std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            F[i] = centre;
+            for (int k = 0; k < D; ++k)
+            {
+                for (int l = 0; l < D; ++l)
+                {
+                    F[i](k, l) += amplitude * uniform(random);
+                }
+            }
+            PlasticState<D> state = randomState<D>(random, 0.3 * amplitude);
+            if (uniaxial)
+            {
+                Vec<D> axis = Vec<D>::Zero();
+                for (int k = 0; k < D; ++k)
+                {
+                    axis[k] = uniform(random);
+                }
+                axis.normalize();
+                F[i] = Mat<D>::Identity() + amplitude * (1.0 + uniform(random)) * axis * axis.transpose();
+                state = PlasticState<D>{};
+            }
+            state.pack(&states[i * PlasticState<D>::packedSize]);
+        }
+    }
+};
+
+// A material whose particles i hold the points' committed states.
+template <int D>
+struct Body
+{
+    ParticleFields<D> fields;
+    std::unique_ptr<Material<D>> material;
+
+    Body(const std::string& text, const RandomPoints<D>& points)
+    {
+        const std::size_t count = points.F.size();
+        fields.setSize(count);
+        material = test::build<Material<D>>(text, {&fields, BodyRange{"body", 0, count}, nullptr}, D);
+        REQUIRE(material->historyComponents() == PlasticState<D>::packedSize);
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            setCommitted(fields, i, &points.states[i * PlasticState<D>::packedSize]);
+        }
+    }
+};
+
+// The points through every path, compared bit for bit; returns the number that flow.
+template <int D>
+std::size_t compareThePaths(const std::string& materialText, const Mat<D>& centre, double amplitude,
+                            std::size_t count, unsigned seed, bool uniaxial = false)
+{
+    constexpr std::size_t stride = PlasticState<D>::packedSize;
+    const RandomPoints<D> points(centre, amplitude, count, seed, uniaxial);
+    const double V0 = 1.0;
+
+    // One at a time: nothing in the memo, so the wave speed and the commit run returnMap.
+    Body<D> alone(materialText, points);
+    std::vector<double> speedAlone(count), dissipatedAlone(count), nextAlone(count * stride);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        speedAlone[i] = alone.material->maxWaveSpeed(&points.F[i], 1, i);
+        dissipatedAlone[i] = alone.material->commit(&points.F[i], &V0, i, 1);
+        alone.material->packHistory(i, &nextAlone[i * stride]);
+    }
+
+    // Eight at a time: the particles' force evaluation, then the wave speed and the commit from
+    // its memo.
+    Body<D> batched(materialText, points);
+    std::vector<Mat<D>> P(count);
+    std::vector<double> psi(count);
+    batched.material->evaluate(points.F.data(), P.data(), psi.data(), count, HistoryOf::particles(0));
+    // The same points as a body's stress samples.
+    std::vector<Mat<D>> sampleP(count);
+    std::vector<double> samplePsi(count), sampleNext(count * stride, -1.0), sampleDissipation(count, -1.0);
+    batched.material->evaluate(points.F.data(), sampleP.data(), samplePsi.data(), count,
+                               HistoryOf::samples(points.states.data(), stride, sampleNext.data(),
+                                                  sampleDissipation.data()));
+
+    std::size_t flowing = 0;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        INFO("point " << i << " of " << count);
+        CHECK(sameBits(batched.material->maxWaveSpeed(&points.F[i], 1, i), speedAlone[i]));
+        CHECK(sameBits(batched.material->commit(&points.F[i], &V0, i, 1), dissipatedAlone[i]));
+        CHECK(sameBits(sampleDissipation[i], dissipatedAlone[i]));
+        CHECK(sameBits(sampleP[i], P[i]));
+        CHECK(sameBits(samplePsi[i], psi[i]));
+        double next[stride];
+        batched.material->packHistory(i, next);
+        for (std::size_t k = 0; k < stride; ++k)
+        {
+            CHECK(sameBits(next[k], nextAlone[i * stride + k]));
+            CHECK(sameBits(sampleNext[i * stride + k], nextAlone[i * stride + k]));
+        }
+        // A flowing point commits a new Cp⁻¹ (at the apex of a cohesionless cone it flows
+        // without dissipating).
+        flowing += std::equal(next, next + D * D, &points.states[i * stride]) ? 0 : 1;
+    }
+    return flowing;
+}
+
+// Elastic samples from the virgin state against `hencky` with the same constants (its
+// principal strains from Eigen's eigen-solver, the law written once more).
+template <int D>
+void compareWithHencky(const std::string& elasticConstants, const std::string& plasticKeys,
+                       double amplitude, std::size_t count, unsigned seed, bool uniaxial)
+{
+    RandomPoints<D> points(Mat<D>::Identity(), amplitude, count, seed, uniaxial);
+    std::fill(points.states.begin(), points.states.end(), 0.0);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        PlasticState<D>{}.pack(&points.states[i * PlasticState<D>::packedSize]);
+    }
+    Body<D> plastic(elasticConstants + plasticKeys, points);
+    ParticleFields<D> fields;
+    fields.setSize(count);
+    const auto hencky = test::build<Material<D>>("type hencky; " + elasticConstants,
+                                                 {&fields, BodyRange{"body", 0, count}, nullptr}, D);
+    std::vector<Mat<D>> P(count);
+    std::vector<double> psi(count), next(points.states.size()), dissipation(count);
+    plastic.material->evaluate(points.F.data(), P.data(), psi.data(), count,
+                               HistoryOf::samples(points.states.data(), PlasticState<D>::packedSize,
+                                                  next.data(), dissipation.data()));
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        INFO("point " << i << " of " << count);
+        REQUIRE(dissipation[i] == 0.0);
+        const Mat<D> expected = hencky->stress(points.F[i]);
+        CHECK((P[i] - expected).norm() <= 1e-12 * expected.norm() + 1e-14 * hencky->youngsModulus());
+        const double energy = hencky->energy(points.F[i]);
+        CHECK(std::abs(psi[i] - energy) <= 1e-12 * energy + 1e-14 * expected.norm());
+    }
+}
+
+const Mat<2> identity = Mat<2>::Identity();
+
+Mat<2> scaled(double s) { return s * Mat<2>::Identity(); }
+
+const Mat<3> identity3 = Mat<3>::Identity();
+
+} // namespace
+
+TEST_CASE("returns in lanes: druckerPrager, eight points at a time as one at a time, bit for bit",
+          "[plasticity][lanes]")
+{
+    const std::string dp = "type druckerPrager; E 7.2e6; nu 0.2; rho 2000; frictionAngle 30; "
+                           "dilatancyAngle 10; cohesion 1e4;";
+    // Sheared around the identity: some points elastic, some on the cone.
+    const std::size_t sheared = compareThePaths<2>(dp, identity, 0.01, 29, 1);
+    CHECK(sheared > 3);
+    CHECK(sheared < 26);
+    // Pulled apart: past the apex (the capped branch).
+    CHECK(compareThePaths<2>(dp, scaled(1.02), 0.003, 13, 2) > 10);
+    // Cohesionless, ψ = 0: open voids, and compressed flow.
+    const std::string sand = "type druckerPrager; E 0.84e6; nu 0.3; rho 2650; frictionAngle 19.8; "
+                             "cohesion 0;";
+    CHECK(compareThePaths<2>(sand, scaled(1.01), 0.02, 8, 3) > 4);
+    CHECK(compareThePaths<2>(sand, scaled(0.99), 0.02, 17, 4) > 4);
+    // 3D: the cone and the apex.
+    const std::size_t cone = compareThePaths<3>(dp, identity3, 0.0015, 21, 9);
+    CHECK(cone > 3);
+    CHECK(cone < 18);
+    CHECK(compareThePaths<3>(dp, 1.02 * identity3, 0.003, 11, 10) > 8);
+}
+
+TEST_CASE("returns in lanes: j2Plasticity, eight points at a time as one at a time, bit for bit",
+          "[plasticity][lanes]")
+{
+    const std::string hardening = "type j2Plasticity; E 200e9; nu 0.3; rho 7800; yieldStress 2e8; "
+                                  "hardeningModulus 1e9;";
+    const std::size_t flowing = compareThePaths<2>(hardening, identity, 0.0008, 27, 5);
+    CHECK(flowing > 3);
+    CHECK(flowing < 24);
+    // Softening to exhaustion: σy reaches 0, the deviator vanishes.
+    const std::string softening = "type j2Plasticity; E 200e9; nu 0.3; rho 7800; yieldStress 2e8; "
+                                  "hardeningModulus -1e11;";
+    CHECK(compareThePaths<2>(softening, identity, 0.02, 9, 6) > 4);
+    const std::string copper = "type j2Plasticity; E 117e9; nu 0.35; rho 8930; yieldStress 0.4e9; "
+                               "hardeningModulus 0.1e9;";
+    const std::size_t copperFlowing = compareThePaths<3>(copper, identity3, 0.003, 29, 7);
+    CHECK(copperFlowing > 3);
+    CHECK(copperFlowing < 26);
+    // Uniaxial stretches from the virgin state: two equal principal stretches.
+    CHECK(compareThePaths<3>(copper, identity3, 0.01, 16, 8, true) > 8);
+}
+
+TEST_CASE("returns in lanes: elastic points are hencky's (2D, and 3D with Jacobi rotations)",
+          "[plasticity][lanes]")
+{
+    const std::string copper = "E 117e9; nu 0.35; rho 8930; ";
+    const std::string j2 = "type j2Plasticity; yieldStress 4e9;";
+    compareWithHencky<2>(copper, j2, 0.01, 19, 11, false);
+    compareWithHencky<3>(copper, j2, 0.01, 19, 12, false);
+    compareWithHencky<3>(copper, j2, 0.01, 13, 13, true);
+    const std::string sand = "E 0.84e6; nu 0.3; rho 2650; ";
+    compareWithHencky<3>(sand, "type druckerPrager; frictionAngle 30; cohesion 1e6;", 0.01, 11, 14, true);
+}
