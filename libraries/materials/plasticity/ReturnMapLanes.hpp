@@ -1,123 +1,24 @@
 #pragma once
-// ReturnMapPlasticity's evaluation of a body's stress samples in lanes (ReturnLanes.hpp): the
-// same steps as returnMap, written over N samples at once. Included at the end of
-// ReturnMapPlasticity.hpp, whose member it defines.
+// ReturnMapPlasticity's return map at eight points side by side (ReturnLanes.hpp), and the
+// paths that use it: a body's stress samples, a chunk of particles (with the memo), the
+// particles the memo does not hold. Included at the end of ReturnMapPlasticity.hpp, whose
+// members it defines.
 //
-// Per lane, as returnMap (docs/theory/plasticity.md §P1–§P4):
+// Per lane, as docs/theory/plasticity.md §P1–§P4 write it:
 //   be = F Cp⁻¹ Fᵀ (in-plane; in 2D be_zz = Cp⁻¹_zz) = Σ λᵢ² nᵢ⊗nᵢ;  εᵢ = ½ ln λᵢ²;
 //   the model's return;  τ(ε);  P = (Σ τᵢ nᵢ⊗nᵢ) F⁻ᵀ;  W = Ψ(ε) (+ the model's extra energy
 //   once the point has flowed);  flowing: Cp⁻¹ = F⁻¹ (Σ exp(2εᵢ) nᵢ⊗nᵢ) F⁻ᵀ, symmetrised (and
 //   in 2D be_zz = exp(2ε₂)).
-// The principal form: in 2D principalStrain<2>'s closed form; in 3D cyclic Jacobi rotations
-// (principalLanes below), which keep every digit at a double eigenvalue, where the closed form
-// loses half of them. The logarithms are the C library's, one lane at a time (Eigen's
+// The principal form: in 2D the closed form of principalStrain<2>; in 3D Jacobi rotations
+// (JacobiLanes.hpp). The logarithms are the C library's, one lane at a time (Eigen's
 // vectorised logarithm differs from it in the last bits, and GCC 12 warns inside its AVX-512
-// code). The products are grouped as written here, not as Eigen's matrix products in
-// returnMap, so a sample's result here and returnMap's agree to round-off (test:
-// numericsTests "[lanes]").
+// code). Every path runs the same instructions on a point's lane, so a point gives the same
+// digits on every path (test: numericsTests "[lanes]").
+
+#include "materials/plasticity/JacobiLanes.hpp"
 
 namespace sph
 {
-
-namespace lanes
-{
-
-// The index of (i, j) in a symmetric 3×3 stored as (00, 11, 22, 01, 02, 12).
-constexpr int symmetric(int i, int j)
-{
-    return i == j ? i : (i + j == 1 ? 3 : (i + j == 2 ? 4 : 5));
-}
-
-// One Jacobi rotation in the (p, q) plane that zeroes a_pq, lane by lane (Golub & Van Loan
-// §8.5: t = sgn θ/(|θ| + √(θ² + 1)), θ = (a_qq − a_pp)/(2 a_pq); t = 0 where a_pq = 0).
-template <int N, int p, int q>
-inline void rotate(Lane<N> (&a)[6], Lane<N> (&v)[3][3], const Lane<N>& done)
-{
-    constexpr int r = 3 - p - q;
-    constexpr int pq = symmetric(p, q);
-    constexpr int rp = symmetric(r, p);
-    constexpr int rq = symmetric(r, q);
-    for (int i = 0; i < N; ++i)
-    {
-        const double x = a[pq][i];
-        const double theta = (a[q][i] - a[p][i]) / (2.0 * x);
-        const double rotation =
-            std::copysign(1.0, theta) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
-        // A lane already converged (done ≠ 0) stays as it is to the bit: t = 0 and a_pq kept,
-        // so that a point gives the same digits in any batch (one lane or eight).
-        const bool keep = x == 0.0 || done[i] != 0.0;
-        const double t = keep ? 0.0 : rotation;
-        const double c = 1.0 / std::sqrt(t * t + 1.0);
-        const double s = t * c;
-        a[p][i] -= t * x;
-        a[q][i] += t * x;
-        a[pq][i] = keep ? x : 0.0;
-        const double arp = a[rp][i];
-        const double arq = a[rq][i];
-        a[rp][i] = c * arp - s * arq;
-        a[rq][i] = s * arp + c * arq;
-        for (int k = 0; k < 3; ++k)
-        {
-            const double vp = v[k][p][i];
-            const double vq = v[k][q][i];
-            v[k][p][i] = c * vp - s * vq;
-            v[k][q][i] = s * vp + c * vq;
-        }
-    }
-}
-
-// The principal form of N symmetric 3×3 matrices a = (00, 11, 22, 01, 02, 12): sweeps of
-// rotations until every lane's off-diagonal part is below 1e-17 of its diagonal (near the
-// identity, as be is, two to four sweeps); a lane that has converged is left alone.
-template <int N>
-void principalForm(Lane<N> (&matrix)[6], Lane<N> (&vectors)[3][3])
-{
-    // Local copies: the rotations vectorise only where the compiler sees that the matrix and
-    // the vectors cannot overlap.
-    Lane<N> a[6];
-    Lane<N> v[3][3];
-    for (int k = 0; k < 6; ++k)
-    {
-        a[k] = matrix[k];
-    }
-    for (int i = 0; i < 3; ++i)
-    {
-        for (int k = 0; k < 3; ++k)
-        {
-            v[i][k] = Lane<N>::Constant(i == k ? 1.0 : 0.0);
-        }
-    }
-    for (int sweep = 0; sweep < 16; ++sweep)
-    {
-        Lane<N> done;
-        for (int i = 0; i < N; ++i)
-        {
-            const double off = a[3][i] * a[3][i] + a[4][i] * a[4][i] + a[5][i] * a[5][i];
-            const double diagonal = a[0][i] * a[0][i] + a[1][i] * a[1][i] + a[2][i] * a[2][i];
-            done[i] = off > 1e-34 * diagonal ? 0.0 : 1.0;
-        }
-        if (done.minCoeff() != 0.0)
-        {
-            break;
-        }
-        rotate<N, 0, 1>(a, v, done);
-        rotate<N, 0, 2>(a, v, done);
-        rotate<N, 1, 2>(a, v, done);
-    }
-    for (int k = 0; k < 6; ++k)
-    {
-        matrix[k] = a[k];
-    }
-    for (int i = 0; i < 3; ++i)
-    {
-        for (int k = 0; k < 3; ++k)
-        {
-            vectors[i][k] = v[i][k];
-        }
-    }
-}
-
-} // namespace lanes
 
 template <int D, class Model>
 template <int N>
@@ -389,6 +290,133 @@ void ReturnMapPlasticity<D, Model>::principalOf(const Lane<N> (&be)[D][D], const
             {
                 out.strain.eps[k][i] = 0.5 * std::log(a[k][i]);
             }
+        }
+    }
+}
+
+template <int D, class Model>
+void ReturnMapPlasticity<D, Model>::evaluateParticlesInLanes(const Mat<D>* F, Mat<D>* P,
+                                                             double* psi, std::size_t count,
+                                                             std::size_t firstParticle) const
+{
+    if constexpr (D >= 2)
+    {
+        double states[lanes * State::packedSize];
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            state(firstParticle + i).pack(states + i * State::packedSize);
+        }
+        LanesResult<lanes> out;
+        returnInLanes<lanes>(F, states, State::packedSize, count, true, true, out);
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            for (int k = 0; k < D; ++k)
+            {
+                for (int l = 0; l < D; ++l)
+                {
+                    P[i](k, l) = out.P[k][l][i];
+                }
+            }
+            if (psi)
+            {
+                psi[i] = out.energy[i];
+            }
+            const Flow flow{out.flow.deltaGamma[i], out.flow.alpha[i], out.flow.dissipation[i]};
+            double next[State::packedSize];
+            for (std::size_t c = 0; c < State::packedSize; ++c)
+            {
+                next[c] = out.next[c][i];
+            }
+            State nextState = State::unpack(next);
+            nextState.alpha = flow.alpha;
+            memo_.store(firstParticle + i, F[i], State::unpack(states + i * State::packedSize),
+                        {out.waveModulus[i], flow, nextState});
+        }
+    }
+}
+
+template <int D, class Model>
+void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<D>* P, double* psi,
+                                                           std::size_t count,
+                                                           const HistoryOf& history) const
+{
+    if constexpr (D >= 2)
+    {
+        const bool wantNext = history.next != nullptr;
+        LanesResult<lanes> out;
+        returnInLanes<lanes>(F, history.states, history.stride, count, true, wantNext, out);
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            for (int k = 0; k < D; ++k)
+            {
+                for (int l = 0; l < D; ++l)
+                {
+                    P[i](k, l) = out.P[k][l][i];
+                }
+            }
+            if (psi)
+            {
+                psi[i] = out.energy[i];
+            }
+            if (wantNext)
+            {
+                for (std::size_t c = 0; c < State::packedSize; ++c)
+                {
+                    history.next[i * history.stride + c] = out.next[c][i];
+                }
+                history.dissipation[i] = out.flow.dissipation[i];
+            }
+        }
+    }
+}
+
+template <int D, class Model>
+void ReturnMapPlasticity<D, Model>::particleReturns(const Mat<D>* F, std::size_t first,
+                                                    std::size_t n,
+                                                    typename ReturnMemo<D>::Entry* out) const
+{
+    if constexpr (D == 1)
+    {
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            out[i] = particleReturn(first + i, F[i], state(first + i));
+        }
+    }
+    else
+    {
+        std::size_t missing[lanes];
+        Mat<D> missingF[lanes];
+        double states[lanes * State::packedSize];
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const State s = state(first + i);
+            if (!memo_.find(first + i, F[i], s, out[i]))
+            {
+                missing[count] = i;
+                missingF[count] = F[i];
+                s.pack(states + count * State::packedSize);
+                ++count;
+            }
+        }
+        if (count == 0)
+        {
+            return;
+        }
+        LanesResult<lanes> r;
+        returnInLanes<lanes>(missingF, states, State::packedSize, count, true, true, r);
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            double next[State::packedSize];
+            for (std::size_t c = 0; c < State::packedSize; ++c)
+            {
+                next[c] = r.next[c][j];
+            }
+            typename ReturnMemo<D>::Entry& e = out[missing[j]];
+            e.waveModulus = r.waveModulus[j];
+            e.flow = {r.flow.deltaGamma[j], r.flow.alpha[j], r.flow.dissipation[j]};
+            e.next = State::unpack(next);
+            e.next.alpha = e.flow.alpha;
         }
     }
 }
