@@ -20,6 +20,47 @@
 namespace sph
 {
 
+namespace lanes
+{
+
+// out = Σₘ a(k, m) b(m, l), D×D, with a and b read through callables (a lane of an array of
+// lanes, or a plain matrix).
+template <int D, class A, class B>
+inline void multiply(const A& a, const B& b, double (&out)[D][D])
+{
+    for (int k = 0; k < D; ++k)
+    {
+        for (int l = 0; l < D; ++l)
+        {
+            out[k][l] = 0.0;
+            for (int m = 0; m < D; ++m)
+            {
+                out[k][l] += a(k, m) * b(m, l);
+            }
+        }
+    }
+}
+
+// Σₘ values[m] nₘ⊗nₘ of lane i, the directions nₘ the columns of `vectors`.
+template <int N, int D>
+inline void assemble(const Lane<N> (&vectors)[D][D], int i, const Eigen::Vector3d& values,
+                     double (&out)[D][D])
+{
+    for (int k = 0; k < D; ++k)
+    {
+        for (int l = 0; l < D; ++l)
+        {
+            out[k][l] = 0.0;
+            for (int m = 0; m < D; ++m)
+            {
+                out[k][l] += values[m] * vectors[k][m][i] * vectors[l][m][i];
+            }
+        }
+    }
+}
+
+} // namespace lanes
+
 template <int D, class Model>
 template <int N>
 void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double* states,
@@ -55,27 +96,16 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     Lane<N> be[D][D];
     for (int i = 0; i < N; ++i)
     {
-        double t[D][D];
+        double t[D][D], product[D][D];
+        lanes::multiply<D>([&](int k, int m) { return f[k][m][i]; },
+                           [&](int m, int l) { return committed[m * D + l][i]; }, t);
+        lanes::multiply<D>([&](int k, int m) { return t[k][m]; },
+                           [&](int m, int l) { return f[l][m][i]; }, product);
         for (int k = 0; k < D; ++k)
         {
             for (int l = 0; l < D; ++l)
             {
-                t[k][l] = 0.0;
-                for (int m = 0; m < D; ++m)
-                {
-                    t[k][l] += f[k][m][i] * committed[m * D + l][i];
-                }
-            }
-        }
-        for (int k = 0; k < D; ++k)
-        {
-            for (int l = 0; l < D; ++l)
-            {
-                be[k][l][i] = 0.0;
-                for (int m = 0; m < D; ++m)
-                {
-                    be[k][l][i] += t[k][m] * f[l][m][i];
-                }
+                be[k][l][i] = product[k][l];
             }
         }
     }
@@ -135,27 +165,15 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     {
         const Eigen::Vector3d eps = principal.strain.point(i);
         const Eigen::Vector3d tau = kirchhoff(eps);
-        double S[D][D];
+        double S[D][D], stress[D][D];
+        lanes::assemble<N, D>(v, i, tau, S);
+        lanes::multiply<D>([&](int k, int m) { return S[k][m]; },
+                           [&](int m, int l) { return finv[l][m][i]; }, stress);
         for (int k = 0; k < D; ++k)
         {
             for (int l = 0; l < D; ++l)
             {
-                S[k][l] = 0.0;
-                for (int m = 0; m < D; ++m)
-                {
-                    S[k][l] += tau[m] * v[k][m][i] * v[l][m][i];
-                }
-            }
-        }
-        for (int k = 0; k < D; ++k)
-        {
-            for (int l = 0; l < D; ++l)
-            {
-                out.P[k][l][i] = 0.0;
-                for (int m = 0; m < D; ++m)
-                {
-                    out.P[k][l][i] += S[k][m] * finv[l][m][i];
-                }
+                out.P[k][l][i] = stress[k][l];
             }
         }
         out.waveModulus[i] = waveModulusAt(eps) + tau.cwiseAbs().maxCoeff();
@@ -187,39 +205,11 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
         const Eigen::Vector3d stretch = (2.0 * principal.strain.point(i)).array().exp();
         // Cp⁻¹ = (F⁻¹ B) F⁻ᵀ with B = Σ exp(2εₖ) nₖ⊗nₖ, then ½ (C + Cᵀ).
         double B[D][D], T[D][D], C[D][D];
-        for (int k = 0; k < D; ++k)
-        {
-            for (int l = 0; l < D; ++l)
-            {
-                B[k][l] = 0.0;
-                for (int m = 0; m < D; ++m)
-                {
-                    B[k][l] += stretch[m] * v[k][m][i] * v[l][m][i];
-                }
-            }
-        }
-        for (int k = 0; k < D; ++k)
-        {
-            for (int l = 0; l < D; ++l)
-            {
-                T[k][l] = 0.0;
-                for (int m = 0; m < D; ++m)
-                {
-                    T[k][l] += finv[k][m][i] * B[m][l];
-                }
-            }
-        }
-        for (int k = 0; k < D; ++k)
-        {
-            for (int l = 0; l < D; ++l)
-            {
-                C[k][l] = 0.0;
-                for (int m = 0; m < D; ++m)
-                {
-                    C[k][l] += T[k][m] * finv[l][m][i];
-                }
-            }
-        }
+        lanes::assemble<N, D>(v, i, stretch, B);
+        lanes::multiply<D>([&](int k, int m) { return finv[k][m][i]; },
+                           [&](int m, int l) { return B[m][l]; }, T);
+        lanes::multiply<D>([&](int k, int m) { return T[k][m]; },
+                           [&](int m, int l) { return finv[l][m][i]; }, C);
         for (int k = 0; k < D; ++k)
         {
             for (int l = 0; l < D; ++l)
