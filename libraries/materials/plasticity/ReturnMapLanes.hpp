@@ -300,27 +300,14 @@ void ReturnMapPlasticity<D, Model>::evaluateParticlesInLanes(const Mat<D>* F, Ma
         returnInLanes<lanes>(F, states, State::packedSize, count, true, true, out);
         for (std::size_t i = 0; i < count; ++i)
         {
-            for (int k = 0; k < D; ++k)
-            {
-                for (int l = 0; l < D; ++l)
-                {
-                    P[i](k, l) = out.P[k][l][i];
-                }
-            }
+            const int lane = static_cast<int>(i);
+            P[i] = out.stressAt(lane);
             if (psi)
             {
                 psi[i] = out.energy[i];
             }
-            const Flow flow{out.flow.deltaGamma[i], out.flow.alpha[i], out.flow.dissipation[i]};
-            double next[State::packedSize];
-            for (std::size_t c = 0; c < State::packedSize; ++c)
-            {
-                next[c] = out.next[c][i];
-            }
-            State nextState = State::unpack(next);
-            nextState.alpha = flow.alpha;
             memo_.store(firstParticle + i, F[i], State::unpack(states + i * State::packedSize),
-                        {out.waveModulus[i], flow, nextState});
+                        {out.waveModulus[i], out.flowAt(lane), out.nextAt(lane)});
         }
     }
 }
@@ -337,23 +324,15 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
         returnInLanes<lanes>(F, history.states, history.stride, count, true, wantNext, out);
         for (std::size_t i = 0; i < count; ++i)
         {
-            for (int k = 0; k < D; ++k)
-            {
-                for (int l = 0; l < D; ++l)
-                {
-                    P[i](k, l) = out.P[k][l][i];
-                }
-            }
+            const int lane = static_cast<int>(i);
+            P[i] = out.stressAt(lane);
             if (psi)
             {
                 psi[i] = out.energy[i];
             }
             if (wantNext)
             {
-                for (std::size_t c = 0; c < State::packedSize; ++c)
-                {
-                    history.next[i * history.stride + c] = out.next[c][i];
-                }
+                out.packNext(lane, history.next + i * history.stride);
                 history.dissipation[i] = out.flow.dissipation[i];
             }
         }
@@ -397,16 +376,8 @@ void ReturnMapPlasticity<D, Model>::particleReturns(const Mat<D>* F, std::size_t
         returnInLanes<lanes>(missingF, states, State::packedSize, count, true, true, r);
         for (std::size_t j = 0; j < count; ++j)
         {
-            double next[State::packedSize];
-            for (std::size_t c = 0; c < State::packedSize; ++c)
-            {
-                next[c] = r.next[c][j];
-            }
-            typename ReturnMemo<D>::Entry& e = out[missing[j]];
-            e.waveModulus = r.waveModulus[j];
-            e.flow = {r.flow.deltaGamma[j], r.flow.alpha[j], r.flow.dissipation[j]};
-            e.next = State::unpack(next);
-            e.next.alpha = e.flow.alpha;
+            const int lane = static_cast<int>(j);
+            out[missing[j]] = {r.waveModulus[lane], r.flowAt(lane), r.nextAt(lane)};
         }
     }
 }

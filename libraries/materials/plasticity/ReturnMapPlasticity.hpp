@@ -167,6 +167,36 @@ private:
         FlowLanes<N> flow;
         Lane<N> waveModulus;
         Lane<N> next[State::packedSize]; // (wantNext) the committed state where it does not flow
+
+        Mat<D> stressAt(int i) const
+        {
+            Mat<D> result;
+            for (int k = 0; k < D; ++k)
+            {
+                for (int l = 0; l < D; ++l)
+                {
+                    result(k, l) = P[k][l][i];
+                }
+            }
+            return result;
+        }
+        Flow flowAt(int i) const { return {flow.deltaGamma[i], flow.alpha[i], flow.dissipation[i]}; }
+        void packNext(int i, double* out) const
+        {
+            for (std::size_t c = 0; c < State::packedSize; ++c)
+            {
+                out[c] = next[c][i];
+            }
+        }
+        // The state a memo entry holds: next, with the flow's α.
+        State nextAt(int i) const
+        {
+            double packed[State::packedSize];
+            packNext(i, packed);
+            State s = State::unpack(packed);
+            s.alpha = flow.alpha[i];
+            return s;
+        }
     };
     template <int N>
     void returnInLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count,
@@ -250,23 +280,13 @@ ReturnMapPlasticity<D, Model>::returnMap(const Mat<D>& F, const State& committed
         committed.pack(packed);
         LanesResult<lanes> one;
         returnInLanes<lanes>(&F, packed, State::packedSize, 1, flow, wantNext, one);
-        for (int k = 0; k < D; ++k)
-        {
-            for (int l = 0; l < D; ++l)
-            {
-                r.P(k, l) = one.P[k][l][0];
-            }
-        }
+        r.P = one.stressAt(0);
         r.energy = one.energy[0];
-        r.flow = {one.flow.deltaGamma[0], one.flow.alpha[0], one.flow.dissipation[0]};
+        r.flow = one.flowAt(0);
         r.waveModulus = one.waveModulus[0];
         if (wantNext && r.flow.deltaGamma > 0.0)
         {
-            for (std::size_t c = 0; c < State::packedSize; ++c)
-            {
-                packed[c] = one.next[c][0];
-            }
-            r.next = State::unpack(packed);
+            r.next = one.nextAt(0);
         }
         r.next.alpha = r.flow.alpha;
         return r;
