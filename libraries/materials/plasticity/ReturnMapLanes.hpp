@@ -1,7 +1,7 @@
 #pragma once
 // ReturnMapPlasticity's return map at eight points side by side (ReturnLanes.hpp), and the
-// paths that use it: a body's stress samples, a chunk of particles (with the memo), the
-// particles the memo does not hold. Included at the end of ReturnMapPlasticity.hpp, whose
+// paths that use it: evaluate (a body's stress samples, a chunk of particles with the memo),
+// the particles the memo does not hold. Included at the end of ReturnMapPlasticity.hpp, whose
 // members it defines.
 //
 // Per lane, as docs/theory/plasticity.md §P1–§P4 write it:
@@ -281,6 +281,70 @@ void ReturnMapPlasticity<D, Model>::principalOf(const Lane<N> (&be)[D][D], const
                 out.strain.eps[k][i] = 0.5 * std::log(a[k][i]);
             }
         }
+    }
+}
+
+template <int D, class Model>
+void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double* psi,
+                                             std::size_t n, HistoryOf history) const
+{
+    for (std::size_t i = 0; i < n;)
+    {
+        if constexpr (D >= 2)
+        {
+            const std::size_t count = std::min(lanes, n - i);
+            if (history.perSample())
+            {
+                HistoryOf chunk = history;
+                chunk.states += i * history.stride;
+                if (history.next)
+                {
+                    chunk.next += i * history.stride;
+                    chunk.dissipation += i;
+                }
+                evaluateSamplesInLanes(F + i, P + i, psi ? psi + i : nullptr, count, chunk);
+                i += count;
+                continue;
+            }
+            if (!history.trialAround)
+            {
+                evaluateParticlesInLanes(F + i, P + i, psi ? psi + i : nullptr, count,
+                                         history.particle(i));
+                i += count;
+                continue;
+            }
+        }
+        // The bar, and the trial (elastic predictor) around one particle: point by point.
+        const bool perSample = history.perSample();
+        const State s = perSample ? State::unpack(history.states + i * history.stride)
+                                  : state(history.particle(i));
+        const bool flow = perSample || !history.trialAround;
+        const bool wantNext = perSample ? history.next != nullptr : flow;
+        const Result r = returnMap(F[i], s, wantNext, flow);
+        P[i] = r.P;
+        if (psi)
+        {
+            psi[i] = r.energy;
+        }
+        if (!perSample && flow)
+        {
+            memo_.store(history.particle(i), F[i], s, {r.waveModulus, r.flow, r.next});
+        }
+        if (perSample && wantNext)
+        {
+            const double* committed = history.states + i * history.stride;
+            double* next = history.next + i * history.stride;
+            if (r.flow.deltaGamma > 0.0)
+            {
+                r.next.pack(next);
+            }
+            else
+            {
+                std::copy(committed, committed + State::packedSize, next);
+            }
+            history.dissipation[i] = r.flow.dissipation;
+        }
+        ++i;
     }
 }
 

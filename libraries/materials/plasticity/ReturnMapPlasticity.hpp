@@ -218,6 +218,21 @@ private:
     // the memo does not hold are computed together, in one set of lanes.
     void particleReturns(const Mat<D>* F, std::size_t first, std::size_t n,
                          typename ReturnMemo<D>::Entry* out) const;
+    // visit(i, entry) for the particles first + i, i < n, at F[i], eight at a time.
+    template <class Visit>
+    void visitParticleReturns(const Mat<D>* F, std::size_t first, std::size_t n, Visit visit) const
+    {
+        typename ReturnMemo<D>::Entry e[lanes];
+        for (std::size_t i = 0; i < n; i += lanes)
+        {
+            const std::size_t count = std::min(lanes, n - i);
+            particleReturns(F + i, first + i, count, e);
+            for (std::size_t j = 0; j < count; ++j)
+            {
+                visit(i + j, e[j]);
+            }
+        }
+    }
 
     PlasticHistory<D> history_;
     mutable ReturnMemo<D> memo_;
@@ -305,70 +320,6 @@ ReturnMapPlasticity<D, Model>::returnMap(const Mat<D>& F, const State& committed
 }
 
 template <int D, class Model>
-void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double* psi,
-                                             std::size_t n, HistoryOf history) const
-{
-    for (std::size_t i = 0; i < n;)
-    {
-        if constexpr (D >= 2)
-        {
-            const std::size_t count = std::min(lanes, n - i);
-            if (history.perSample())
-            {
-                HistoryOf chunk = history;
-                chunk.states += i * history.stride;
-                if (history.next)
-                {
-                    chunk.next += i * history.stride;
-                    chunk.dissipation += i;
-                }
-                evaluateSamplesInLanes(F + i, P + i, psi ? psi + i : nullptr, count, chunk);
-                i += count;
-                continue;
-            }
-            if (!history.trialAround)
-            {
-                evaluateParticlesInLanes(F + i, P + i, psi ? psi + i : nullptr, count,
-                                         history.particle(i));
-                i += count;
-                continue;
-            }
-        }
-        // The bar, and the trial (elastic predictor) around one particle: point by point.
-        const bool perSample = history.perSample();
-        const State s = perSample ? State::unpack(history.states + i * history.stride)
-                                  : state(history.particle(i));
-        const bool flow = perSample || !history.trialAround;
-        const bool wantNext = perSample ? history.next != nullptr : flow;
-        const Result r = returnMap(F[i], s, wantNext, flow);
-        P[i] = r.P;
-        if (psi)
-        {
-            psi[i] = r.energy;
-        }
-        if (!perSample && flow)
-        {
-            memo_.store(history.particle(i), F[i], s, {r.waveModulus, r.flow, r.next});
-        }
-        if (perSample && wantNext)
-        {
-            const double* committed = history.states + i * history.stride;
-            double* next = history.next + i * history.stride;
-            if (r.flow.deltaGamma > 0.0)
-            {
-                r.next.pack(next);
-            }
-            else
-            {
-                std::copy(committed, committed + State::packedSize, next);
-            }
-            history.dissipation[i] = r.flow.dissipation;
-        }
-        ++i;
-    }
-}
-
-template <int D, class Model>
 PlasticCorrection<D> ReturnMapPlasticity<D, Model>::plasticCorrection(const Mat<D>& F,
                                                                       std::size_t a) const
 {
@@ -440,16 +391,8 @@ double ReturnMapPlasticity<D, Model>::maxWaveSpeedSinceReference(const Mat<D>* F
                                                                  std::size_t first) const
 {
     double c = 0.0;
-    typename ReturnMemo<D>::Entry e[lanes];
-    for (std::size_t i = 0; i < n; i += lanes)
-    {
-        const std::size_t count = std::min(lanes, n - i);
-        particleReturns(F + i, first + i, count, e);
-        for (std::size_t j = 0; j < count; ++j)
-        {
-            c = std::max(c, waveSpeedOf(e[j].waveModulus, Mat<D>(F[i + j] * Fr[i + j].inverse())));
-        }
-    }
+    visitParticleReturns(F, first, n, [&](std::size_t i, const auto& e)
+                         { c = std::max(c, waveSpeedOf(e.waveModulus, Mat<D>(F[i] * Fr[i].inverse()))); });
     return c;
 }
 
@@ -458,16 +401,8 @@ double ReturnMapPlasticity<D, Model>::maxWaveSpeed(const Mat<D>* F, std::size_t 
                                                    std::size_t first) const
 {
     double c = 0.0;
-    typename ReturnMemo<D>::Entry e[lanes];
-    for (std::size_t i = 0; i < n; i += lanes)
-    {
-        const std::size_t count = std::min(lanes, n - i);
-        particleReturns(F + i, first + i, count, e);
-        for (std::size_t j = 0; j < count; ++j)
-        {
-            c = std::max(c, waveSpeedOf(e[j].waveModulus, F[i + j]));
-        }
-    }
+    visitParticleReturns(F, first, n, [&](std::size_t i, const auto& e)
+                         { c = std::max(c, waveSpeedOf(e.waveModulus, F[i])); });
     return c;
 }
 
@@ -511,20 +446,15 @@ double ReturnMapPlasticity<D, Model>::commit(const Mat<D>* F, const double* V0, 
                                              std::size_t n)
 {
     double dissipated = 0.0;
-    typename ReturnMemo<D>::Entry e[lanes];
-    for (std::size_t i = 0; i < n; i += lanes)
-    {
-        const std::size_t count = std::min(lanes, n - i);
-        particleReturns(F + i, first + i, count, e);
-        for (std::size_t j = 0; j < count; ++j)
-        {
-            if (e[j].flow.deltaGamma > 0.0)
-            {
-                history_.store(first + i + j, e[j].next);
-                dissipated += model().dissipated(V0[i + j], e[j].flow);
-            }
-        }
-    }
+    visitParticleReturns(F, first, n,
+                         [&](std::size_t i, const auto& e)
+                         {
+                             if (e.flow.deltaGamma > 0.0)
+                             {
+                                 history_.store(first + i, e.next);
+                                 dissipated += model().dissipated(V0[i], e.flow);
+                             }
+                         });
     return dissipated;
 }
 
