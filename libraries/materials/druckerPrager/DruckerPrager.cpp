@@ -10,29 +10,53 @@ namespace sph
 ConeMatching::Kind ConeMatching::parse(const std::string& name)
 {
     // The schema's choices admit only these words.
-    return name == "outer" ? Kind::outer : name == "inner" ? Kind::inner : Kind::planeStrain;
+    return name == "outer"             ? Kind::outer
+           : name == "inner"           ? Kind::inner
+           : name == "planeStrainFlow" ? Kind::planeStrainFlow
+                                       : Kind::planeStrain;
 }
 
-double ConeMatching::eta(Kind kind, double angle)
+namespace
 {
-    if (kind == Kind::planeStrain)
-    {
-        const double t = std::tan(angle); // Bui et al. 2008: 3 tan φ/√(9 + 12 tan² φ)
-        return 3.0 * t / std::sqrt(9.0 + 12.0 * t * t);
-    }
-    const double sign = kind == Kind::outer ? -1.0 : 1.0; // 3 ∓ sin φ
-    return 6.0 * std::sin(angle) / (std::sqrt(3.0) * (3.0 + sign * std::sin(angle)));
+// Bui et al. 2008: 3 tan a/√(9 + 12 tan² a) = sin a/√(1 + sin² a/3), and ξ likewise.
+double planeStrainEta(double angle)
+{
+    const double t = std::tan(angle);
+    return 3.0 * t / std::sqrt(9.0 + 12.0 * t * t);
 }
-
-double ConeMatching::xi(Kind kind, double angle)
+double planeStrainXi(double angle)
 {
-    if (kind == Kind::planeStrain)
+    const double t = std::tan(angle);
+    return 3.0 / std::sqrt(9.0 + 12.0 * t * t);
+}
+} // namespace
+
+ConeMatching::Cone ConeMatching::of(Kind kind, double phi, double psi)
+{
+    switch (kind)
     {
-        const double t = std::tan(angle);
-        return 3.0 / std::sqrt(9.0 + 12.0 * t * t);
+    case Kind::planeStrain:
+        return {planeStrainEta(phi), planeStrainXi(phi), planeStrainEta(psi)};
+    case Kind::planeStrainFlow:
+    {
+        // (P9.6): steady plane-strain flow on the cone of η̄ has σzz − p = −(2η̄/3)√J2, so
+        // √J2 = t/c with c = √(1 − η̄²/3), t the in-plane Mohr radius, and Φ = 0 reads
+        // t (1 − η η̄/3)/c + η m = ξ c0 (m the in-plane mean stress): Mohr–Coulomb of angle φ.
+        const double etaBar = planeStrainEta(psi);
+        const double c = std::sqrt(1.0 - etaBar * etaBar / 3.0);
+        const double eta = std::sin(phi) / (c + etaBar * std::sin(phi) / 3.0);
+        return {eta, std::cos(phi) * (1.0 - eta * etaBar / 3.0) / c, etaBar};
     }
-    const double sign = kind == Kind::outer ? -1.0 : 1.0;
-    return 6.0 * std::cos(angle) / (std::sqrt(3.0) * (3.0 + sign * std::sin(angle)));
+    case Kind::outer:
+    case Kind::inner:
+    default:
+    {
+        const double sign = kind == Kind::outer ? -1.0 : 1.0; // 3 ∓ sin a
+        const auto through = [sign](double angle, double trig)
+        { return 6.0 * trig / (std::sqrt(3.0) * (3.0 + sign * std::sin(angle))); };
+        return {through(phi, std::sin(phi)), through(phi, std::cos(phi)), through(psi, std::sin(psi))};
+    }
+    }
 }
 
 template <int D>
@@ -63,7 +87,9 @@ Schema DruckerPrager<D>::schema()
                  .nonNegative()
                  .optional())
         .add(Key::word("coneMatching", "which Mohr-Coulomb the cone matches: planeStrain (Bui "
-                                       "et al. 2008), outer (triaxial compression), inner "
+                                       "et al. 2008; exact in plane-strain flow when psi = "
+                                       "phi), planeStrainFlow (exact in plane-strain flow at "
+                                       "any psi), outer (triaxial compression), inner "
                                        "(triaxial extension)")
                  .choices(ConeMatching::names())
                  .defaultValue("planeStrain"));
@@ -87,9 +113,10 @@ DruckerPrager<D>::DruckerPrager(const Params& params, const typename Material<D>
     }
     atRest_ = 1.0 - std::sin(phi * degree);
     const ConeMatching::Kind kind = ConeMatching::parse(params.word("coneMatching"));
-    eta_ = ConeMatching::eta(kind, phi * degree);
-    xi_ = ConeMatching::xi(kind, phi * degree);
-    etaBar_ = ConeMatching::eta(kind, psi * degree);
+    const ConeMatching::Cone cone = ConeMatching::of(kind, phi * degree, psi * degree);
+    eta_ = cone.eta;
+    xi_ = cone.xi;
+    etaBar_ = cone.etaBar;
     apexPressure_ = xi_ * cohesion_ / eta_;
     tensileStrength_ = params.has("tensileStrength") ? params.real("tensileStrength") : apexPressure_;
     if (tensileStrength_ > apexPressure_)

@@ -14,7 +14,8 @@
 //   capped branch is the apex: s = 0).
 //
 // η, ξ from φ and η̄ from ψ by the cone's matching to Mohr–Coulomb (planeStrain: Bui et al.
-// 2008; outer/inner: de Souza Neto et al. 2008 §8.2.4). ψ = 0: no plastic volume change on
+// 2008; planeStrainFlow: the same at the material's ψ, (P9.6); outer/inner: de Souza Neto et
+// al. 2008 §8.2.4). ψ = 0: no plastic volume change on
 // the cone; ψ = φ: associative. The energy is W = Ψ(εe) + τ:Δεp (P9.4), the step's plastic
 // work being what a commit dissipates; without yielding this is `hencky` to round-off. With
 // ψ ≠ φ the stress is not ∂W/∂F (no incremental potential). α (output only):
@@ -25,7 +26,7 @@
 //   cohesion         | c [Pa], ≥ 0                                               | 0
 //   dilatancyAngle   | ψ [degrees], in [0, φ]                                     | 0
 //   tensileStrength  | σt [Pa], in [0, ξ c/η] (the cone's apex pressure)          | ξ c/η
-//   coneMatching     | planeStrain | outer | inner                               | planeStrain
+//   coneMatching     | planeStrain | planeStrainFlow | outer | inner             | planeStrain
 // Fields: those of j2Plasticity (PlasticHistory.hpp).
 
 #include "materials/plasticity/ReturnMapPlasticity.hpp"
@@ -34,19 +35,28 @@
 namespace sph
 {
 
-// η and ξ of a cone matched to Mohr–Coulomb of angle φ [radians] (η̄: the same with ψ).
+// The cone's η, ξ and η̄ matched to Mohr–Coulomb of friction angle φ and dilatancy angle ψ
+// [radians] (plasticity.md §P9): planeStrain, outer and inner take η, ξ from φ and η̄ the same
+// way from ψ; planeStrainFlow takes all three from both, so that steady plane-strain flow at
+// that ψ meets Mohr–Coulomb of angle φ (planeStrain is the case ψ = φ).
 struct ConeMatching
 {
     enum class Kind
     {
         planeStrain,
+        planeStrainFlow,
         outer,
         inner
     };
-    static std::vector<std::string> names() { return {"planeStrain", "outer", "inner"}; }
+    struct Cone
+    {
+        double eta;
+        double xi;
+        double etaBar;
+    };
+    static std::vector<std::string> names() { return {"planeStrain", "planeStrainFlow", "outer", "inner"}; }
     static Kind parse(const std::string& name);
-    static double eta(Kind kind, double angle);
-    static double xi(Kind kind, double angle);
+    static Cone of(Kind kind, double phi, double psi);
 };
 
 template <int D>
