@@ -1,7 +1,8 @@
 #pragma once
-// What the 2D profile objects (surfaceProfile, failureLine) share: the bodies they read, the
+// What the profile objects (surfaceProfile, failureLine) share: the bodies they read, the
 // width of their columns along x and half a particle spacing (the cell a particle centre
 // stands for: a surface is a centre plus half a spacing, a failure height a centre minus it).
+// The spacing is V0^(1/D) (a 3D surfaceProfile profiles a slice of a slab).
 // Keys:
 //   bodies     | which bodies ( ) = all                                         | ()
 //   binWidth   | column width [m], > 0                                          | the spacing
@@ -17,7 +18,7 @@ namespace sph
 struct ProfileColumns
 {
     std::vector<std::size_t> bodies; // body indices, all when the key lists none
-    double half = 0.0;               // half the mean spacing V0^(1/2) of their particles
+    double half = 0.0;               // half the mean spacing V0^(1/D) of their particles
     double width = 0.0;              // column width
 
     static Schema addKeys(Schema schema)
@@ -47,7 +48,7 @@ struct ProfileColumns
         {
             for (std::size_t a = p.bodies[b].begin; a < p.bodies[b].end; ++a)
             {
-                spacing += std::sqrt(p.V0[a]);
+                spacing += D == 3 ? std::cbrt(p.V0[a]) : std::sqrt(p.V0[a]);
                 ++count;
             }
         }

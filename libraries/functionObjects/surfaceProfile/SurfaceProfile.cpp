@@ -1,11 +1,14 @@
-// `surfaceProfile` (2D): the free surface of a deposit, y_top(x), against a measured one — the
-// final profile of a granular column collapse (tutorials/geomaterials/columnCollapse).
-// The particles of the chosen bodies are put into columns of width `binWidth` along x (from
-// x = 0); a column's surface is its highest particle centre plus half a spacing (particles sit
-// at the centres of their cells), an empty column's is 0 (the floor).
+// `surfaceProfile` (2D, and a slice of a 3D slab): the free surface of a deposit, y_top(x),
+// against a measured one — the final profile of a granular column collapse
+// (tutorials/geomaterials/columnCollapse, columnCollapse3D). The particles of the chosen
+// bodies are put into columns of width `binWidth` along x (from x = 0); a column's surface is
+// its highest particle centre plus half a spacing (particles sit at the centres of their
+// cells), an empty column's is 0 (the floor). In 3D, y is up as in 2D and only the particles
+// whose current z lies in `slice` count: the profile of a plane-strain slab's mid-plane.
 // Keys:
 //   bodies     | which bodies ( ) = all                                         | ()
 //   binWidth   | column width [m], > 0                                          | the spacing
+//   slice      | 3D only, required: (zMin zMax) [m], zMin < zMax                | none
 //   reference  | a measured profile: a text file (relative to the case) of x y pairs, comma or
 //              | blank separated, '#' comments and one header line allowed      | none
 // Output, at each row time: postProcessing/<name>/<name>_<time>.dat (x height [reference]
@@ -29,6 +32,7 @@
 #include "io/AtomicFile.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -37,13 +41,13 @@
 namespace sph
 {
 
-template <int D>
-class SurfaceProfile : public FunctionObjectModel<D>
+template <int D> class SurfaceProfile : public FunctionObjectModel<D>
 {
 public:
     static std::string description()
     {
-        return "2D: the free surface y_top(x) of the chosen bodies at intervals, its front "
+        return "2D, or a slice zMin <= z <= zMax of a 3D slab: the free surface y_top(x) of the "
+               "chosen bodies at intervals, its front "
                "(run-out: the farthest particle), the end of the continuous deposit, its top, "
                "and the largest vertical distance to a measured profile.";
     }
@@ -52,6 +56,9 @@ public:
         return ProfileColumns::addKeys(FunctionObjectModel<D>::commonSchema())
             .add(Key::string("reference", "a measured profile: x y pairs [m] (file relative "
                                           "to the case)")
+                     .optional())
+            .add(Key::realList("slice", "3D: (zMin zMax) [m], the band of z whose particles "
+                                        "make the profile (a slab's mid-plane)")
                      .optional());
     }
 
@@ -62,6 +69,7 @@ public:
         bodies_ = profile.bodies;
         half_ = profile.half;
         width_ = profile.width;
+        readSlice(params);
         std::vector<std::string> columns{"front", "top", "depositEnd"};
         if (params.has("reference"))
         {
@@ -88,7 +96,7 @@ public:
         {
             for (std::size_t a = p.bodies[b].begin; a < p.bodies[b].end; ++a)
             {
-                if (!ranks.counts(a))
+                if (!ranks.counts(a) || !inSlice(p.x[a]))
                 {
                     continue;
                 }
@@ -170,8 +178,9 @@ public:
         std::string text = line;
         if (last_.size() > 3)
         {
-            std::snprintf(line, sizeof line, ", largest distance to the reference %.4g m at x = %.4g m",
-                          last_[3], last_[4]);
+            std::snprintf(line, sizeof line,
+                          ", largest distance to the reference %.4g m at x = %.4g m", last_[3],
+                          last_[4]);
             text += line;
         }
         return {text};
@@ -195,6 +204,46 @@ public:
     }
 
 private:
+    void readSlice(const Params& params)
+    {
+        if constexpr (D == 3)
+        {
+            if (!params.has("slice"))
+            {
+                // (at the dictionary: an absent optional key has no place of its own)
+                throw InputError(
+                    params.source().location(),
+                    "surfaceProfile: a 3D run profiles a slice of z, and 'slice' is "
+                    "missing",
+                    {"Add 'slice (zMin zMax);', e.g. a band one or two spacings wide about "
+                     "the mid-plane of a slab between side walls."});
+            }
+            const std::vector<double>& slice = params.realList("slice");
+            if (slice.size() != 2 || !(slice[0] < slice[1]))
+            {
+                params.fail(
+                    "slice", "surfaceProfile: 'slice' must be two numbers zMin < zMax",
+                    {"e.g. 'slice (0.045 0.055);' for the particles within 5 mm of z = 0.05."});
+            }
+            slice_ = {slice[0], slice[1]};
+        }
+        else if (params.has("slice"))
+        {
+            params.fail("slice",
+                        "surfaceProfile: 'slice' selects a band of z, which a " +
+                            std::to_string(D) + "D run does not have",
+                        {"Remove 'slice' (it is for 3D slabs)."});
+        }
+    }
+    bool inSlice(const Vec<D>& x) const
+    {
+        if constexpr (D == 3)
+        {
+            return x[2] >= slice_[0] && x[2] <= slice_[1];
+        }
+        return true;
+    }
+
     double depositEnd(const std::vector<double>& height) const
     {
         std::size_t c = 0;
@@ -235,8 +284,9 @@ private:
         {
             return x == reference_.back().first ? reference_.back().second : 0.0;
         }
-        const auto upper = std::upper_bound(reference_.begin(), reference_.end(), x,
-                                            [](double v, const auto& point) { return v < point.first; });
+        const auto upper =
+            std::upper_bound(reference_.begin(), reference_.end(), x,
+                             [](double v, const auto& point) { return v < point.first; });
         const auto lower = upper - 1;
         const double t = (x - lower->first) / (upper->first - lower->first);
         return lower->second + t * (upper->second - lower->second);
@@ -271,8 +321,9 @@ private:
                     headerSeen = true; // one header line ("x,y")
                     continue;
                 }
-                params.fail("reference", "surfaceProfile: " + file.string() + ":" +
-                                             std::to_string(number) + ": not an 'x y' pair of numbers",
+                params.fail("reference",
+                            "surfaceProfile: " + file.string() + ":" + std::to_string(number) +
+                                ": not an 'x y' pair of numbers",
                             {"The file holds x y pairs [m], comma or blank separated; '#' starts "
                              "a comment, one header line is allowed."});
             }
@@ -280,19 +331,20 @@ private:
         }
         if (reference_.size() < 2)
         {
-            params.fail("reference", "surfaceProfile: " + file.string() +
-                                         " holds fewer than two points");
+            params.fail("reference",
+                        "surfaceProfile: " + file.string() + " holds fewer than two points");
         }
         std::sort(reference_.begin(), reference_.end());
     }
 
     std::vector<std::size_t> bodies_;
+    std::array<double, 2> slice_{}; // 3D: zMin, zMax
     double half_ = 0.0;
     double width_ = 0.0;
     std::vector<std::pair<double, double>> reference_;
     std::vector<double> last_;
 };
 
-SPH_REGISTER_DIM_MODEL_FOR(FunctionObject, SurfaceProfile, "surfaceProfile", 2);
+SPH_REGISTER_DIM_MODEL_FOR(FunctionObject, SurfaceProfile, "surfaceProfile", 2, 3);
 
 } // namespace sph

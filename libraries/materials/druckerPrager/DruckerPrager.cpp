@@ -54,27 +54,26 @@ ConeMatching::Cone ConeMatching::of(Kind kind, double phi, double psi)
         const double sign = kind == Kind::outer ? -1.0 : 1.0; // 3 ∓ sin a
         const auto through = [sign](double angle, double trig)
         { return 6.0 * trig / (std::sqrt(3.0) * (3.0 + sign * std::sin(angle))); };
-        return {through(phi, std::sin(phi)), through(phi, std::cos(phi)), through(psi, std::sin(psi))};
+        return {through(phi, std::sin(phi)), through(phi, std::cos(phi)),
+                through(psi, std::sin(psi))};
     }
     }
 }
 
-template <int D>
-std::string DruckerPrager<D>::description()
+template <int D> std::string DruckerPrager<D>::description()
 {
     return "Finite-strain Drucker-Prager plasticity (friction, cohesion, dilatancy, tension "
            "cut-off), perfectly plastic: F = Fe Fp, Hencky elasticity, cone/apex return in "
            "principal log strains (docs/theory/plasticity.md §P9); 2D plane strain and 3D.";
 }
 
-template <int D>
-Schema DruckerPrager<D>::schema()
+template <int D> Schema DruckerPrager<D>::schema()
 {
     return Material<D>::commonSchema()
         .include(IsotropicElasticity::schema())
         .add(Key::real("frictionAngle", "internal friction angle phi [degrees] (a "
-                                         "pressure-independent material, phi = 0, is "
-                                         "j2Plasticity)")
+                                        "pressure-independent material, phi = 0, is "
+                                        "j2Plasticity)")
                  .range(0.0, 90.0, false, false))
         .add(Key::real("cohesion", "cohesion c [Pa]").nonNegative().defaultValue("0"))
         .add(Key::real("dilatancyAngle", "dilatancy angle psi [degrees], at most frictionAngle; "
@@ -108,8 +107,10 @@ DruckerPrager<D>::DruckerPrager(const Params& params, const typename Material<D>
                     "druckerPrager: dilatancyAngle " + formatNumber(psi) +
                         " exceeds frictionAngle " + formatNumber(phi) +
                         ": the plastic flow would create energy under high confinement",
-                    {"Use a value in [0, " + formatNumber(phi) + "]; 0 (no plastic volume "
-                     "change) is usual for soils, " + formatNumber(phi) + " is associative."});
+                    {"Use a value in [0, " + formatNumber(phi) +
+                     "]; 0 (no plastic volume "
+                     "change) is usual for soils, " +
+                     formatNumber(phi) + " is associative."});
     }
     atRest_ = 1.0 - std::sin(phi * degree);
     const ConeMatching::Kind kind = ConeMatching::parse(params.word("coneMatching"));
@@ -118,7 +119,8 @@ DruckerPrager<D>::DruckerPrager(const Params& params, const typename Material<D>
     xi_ = cone.xi;
     etaBar_ = cone.etaBar;
     apexPressure_ = xi_ * cohesion_ / eta_;
-    tensileStrength_ = params.has("tensileStrength") ? params.real("tensileStrength") : apexPressure_;
+    tensileStrength_ =
+        params.has("tensileStrength") ? params.real("tensileStrength") : apexPressure_;
     if (tensileStrength_ > apexPressure_)
     {
         params.fail("tensileStrength",

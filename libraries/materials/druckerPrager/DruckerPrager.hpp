@@ -29,8 +29,8 @@
 //   coneMatching     | planeStrain | planeStrainFlow | outer | inner             | planeStrain
 // Fields: those of j2Plasticity (PlasticHistory.hpp).
 
-#include "materials/plasticity/ReturnMapPlasticity.hpp"
 #include "materials/plasticity/ReturnLanes.hpp"
+#include "materials/plasticity/ReturnMapPlasticity.hpp"
 
 namespace sph
 {
@@ -54,13 +54,15 @@ struct ConeMatching
         double xi;
         double etaBar;
     };
-    static std::vector<std::string> names() { return {"planeStrain", "planeStrainFlow", "outer", "inner"}; }
+    static std::vector<std::string> names()
+    {
+        return {"planeStrain", "planeStrainFlow", "outer", "inner"};
+    }
     static Kind parse(const std::string& name);
     static Cone of(Kind kind, double phi, double psi);
 };
 
-template <int D>
-class DruckerPrager : public ReturnMapPlasticity<D, DruckerPrager<D>>
+template <int D> class DruckerPrager : public ReturnMapPlasticity<D, DruckerPrager<D>>
 {
 public:
     using Flow = PlasticFlow;
@@ -87,8 +89,8 @@ public:
         const double K = this->law_.K;
         const double ev = eps.sum();
         const double opening = tensileStrength_ / K; // εt
-        const double volumetric = ev <= opening ? 0.5 * K * ev * ev
-                                                : tensileStrength_ * (ev - 0.5 * opening);
+        const double volumetric =
+            ev <= opening ? 0.5 * K * ev * ev : tensileStrength_ * (ev - 0.5 * opening);
         const Eigen::Vector3d dev = eps - Eigen::Vector3d::Constant(ev / 3.0);
         return this->law_.mu * dev.squaredNorm() + volumetric;
     }
@@ -136,7 +138,8 @@ void DruckerPrager<D>::returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha,
     for (int i = 0; i < N; ++i)
     {
         const double ev = trial.volumetric[i];
-        const double rootJ2Trial = std::sqrt(2.0) * mu * trial.norm[i]; // √J2 = |s|/√2, s = 2μ dev ε
+        const double rootJ2Trial =
+            std::sqrt(2.0) * mu * trial.norm[i]; // √J2 = |s|/√2, s = 2μ dev ε
         phiTrial[i] = rootJ2Trial + eta_ * std::min(K * ev, tensileStrength_) - xi_ * cohesion_;
         // (P9.3) On the capped branch p = σt does not change with εv: the cone alone returns
         // s; accepted while the dilatancy keeps εv ≥ εt. Else (or from εv_tr ≤ εt) the linear

@@ -34,11 +34,15 @@ Eigen::Vector3d returnedStress(test::MaterialPoint<3>& point, const Eigen::Vecto
 {
     const Mat<3> F = eps.array().exp().matrix().asDiagonal();
     const Mat<3> tau = point.kirchhoff(F);
-    REQUIRE((tau - Mat<3>(tau.diagonal().asDiagonal())).cwiseAbs().maxCoeff() < 1e-9 * tau.norm() + 1e-12);
+    REQUIRE((tau - Mat<3>(tau.diagonal().asDiagonal())).cwiseAbs().maxCoeff() <
+            1e-9 * tau.norm() + 1e-12);
     return tau.diagonal();
 }
 
-double pressure(const Eigen::Vector3d& tau) { return tau.sum() / 3.0; }
+double pressure(const Eigen::Vector3d& tau)
+{
+    return tau.sum() / 3.0;
+}
 double rootJ2(const Eigen::Vector3d& tau)
 {
     return (tau - Eigen::Vector3d::Constant(pressure(tau))).norm() / std::sqrt(2.0);
@@ -80,7 +84,8 @@ Mat<3> randomGradient(std::mt19937& random, double amplitude)
 // − 0.83205029·1e4 = 1881.1106 > 0; Δγ = Φ_tr/(μ + K η η̄) = 1881.1106/3332008.9
 // = 5.6455779e-4; √J2 = √J2_tr − μΔγ = 25801.781 (≥ 0: on the cone), p = p_tr − K η̄ Δγ
 // = −36390.182 (≤ σt).
-TEST_CASE("druckerPrager: the smooth-cone return against a hand-computed case", "[plasticity][druckerPrager]")
+TEST_CASE("druckerPrager: the smooth-cone return against a hand-computed case",
+          "[plasticity][druckerPrager]")
 {
     CHECK(etaOf(30) == Approx(0.48038446).epsilon(1e-8));
     CHECK(xiOf(30) == Approx(0.83205029).epsilon(1e-8));
@@ -107,15 +112,18 @@ TEST_CASE("druckerPrager: the smooth-cone return against a hand-computed case", 
 // of dev ε, |dev ε| = √2e-3, so α = √(2/3)√2e-3 = 1.1547005e-3; the plastic work τ:Δεp =
 // p η̄ Δγ = 17320.508·0.172782013·2e-3 = 5.9853445 J/m³ (the volumetric strain beyond εt is
 // open voids, not plastic flow: no work), which the commit dissipates.
-TEST_CASE("druckerPrager: the apex return, and a cohesionless material in tension", "[plasticity][druckerPrager]")
+TEST_CASE("druckerPrager: the apex return, and a cohesionless material in tension",
+          "[plasticity][druckerPrager]")
 {
     SECTION("c > 0: hand-computed apex")
     {
         test::MaterialPoint<3> point(dpText(30, 10));
         const Eigen::Vector3d eps(5e-3, 4e-3, 3e-3);
         const Eigen::Vector3d tau = returnedStress(point, eps);
-        CHECK((tau - Eigen::Vector3d::Constant(17320.508075688773)).cwiseAbs().maxCoeff() < 1e-9 * 17320.5);
-        CHECK(point.commit(eps.array().exp().matrix().asDiagonal()) == Approx(5.9853445).epsilon(1e-7));
+        CHECK((tau - Eigen::Vector3d::Constant(17320.508075688773)).cwiseAbs().maxCoeff() <
+              1e-9 * 17320.5);
+        CHECK(point.commit(eps.array().exp().matrix().asDiagonal()) ==
+              Approx(5.9853445).epsilon(1e-7));
         CHECK(point.alpha() == Approx(1.1547005e-3).epsilon(1e-7));
     }
     SECTION("c = 0: pulled apart the stress is zero; pressed together, the voids close first")
@@ -138,7 +146,8 @@ TEST_CASE("druckerPrager: the apex return, and a cohesionless material in tensio
                 // ψ = 0: the cone flowed deviatorically, the voids are the whole εv = 2.5e-3;
                 // pressed by 2.8e-3 they close and the last 3e-4 is elastic compression.
                 const Mat<3> tau = point.kirchhoff(F * std::exp(-2.8e-3 / 3.0));
-                CHECK((tau - Mat<3>::Identity() * (-3e-4 * K)).cwiseAbs().maxCoeff() < 1e-9 * 3e-4 * K);
+                CHECK((tau - Mat<3>::Identity() * (-3e-4 * K)).cwiseAbs().maxCoeff() <
+                      1e-9 * 3e-4 * K);
             }
         }
     }
@@ -148,11 +157,13 @@ TEST_CASE("druckerPrager: the apex return, and a cohesionless material in tensio
 // does not change with εv, so the bound drops K, and at the apex of a cohesionless cone (every
 // admissible state stress-free) it drops μ too; a closed point keeps the elastic (P2.5). Through
 // maxWaveSpeed, the time step's call, from the committed state of an opened point.
-TEST_CASE("druckerPrager: the wave-speed bound of an open point (P2.7)", "[plasticity][druckerPrager]")
+TEST_CASE("druckerPrager: the wave-speed bound of an open point (P2.7)",
+          "[plasticity][druckerPrager]")
 {
     const double rho = 2000.0;
     const Mat<3> opened = Eigen::Vector3d(1e-3, 2e-3, -0.5e-3).array().exp().matrix().asDiagonal();
-    const Mat<3> squeezed = Eigen::Vector3d(-1e-3, -2e-3, -0.5e-3).array().exp().matrix().asDiagonal();
+    const Mat<3> squeezed =
+        Eigen::Vector3d(-1e-3, -2e-3, -0.5e-3).array().exp().matrix().asDiagonal();
     const double closedC = std::sqrt((K + 4 * mu / 3) / rho);
     SECTION("c = 0: no stress and no stiffness while open; the elastic bound once closed")
     {
@@ -179,7 +190,8 @@ TEST_CASE("druckerPrager: the wave-speed bound of an open point (P2.7)", "[plast
         test::MaterialPoint<3> point(dpText(30, 0, 0.0));
         const double c = point.material->maxWaveSpeed(&squeezed, 1, 0);
         const Mat<3> tau = point.kirchhoff(squeezed);
-        CHECK(c == Approx(std::sqrt((K + 4 * mu / 3 + tau.cwiseAbs().maxCoeff()) / rho) / std::exp(-2e-3))
+        CHECK(c == Approx(std::sqrt((K + 4 * mu / 3 + tau.cwiseAbs().maxCoeff()) / rho) /
+                          std::exp(-2e-3))
                        .epsilon(1e-12));
     }
 }
@@ -187,7 +199,8 @@ TEST_CASE("druckerPrager: the wave-speed bound of an open point (P2.7)", "[plast
 // ψ = 0: the cone's flow is deviatoric, εv unchanged, det Cp⁻¹ = exp(−2 tr εp) stays 1;
 // ψ = φ: Δεp = εtr − ε is parallel to ∂Φ/∂τ = s/(2√J2) + η/3 1 at the returned τ. Both on the
 // smooth cone (compressed, sheared states; the cut-off's flow is volumetric by design).
-TEST_CASE("druckerPrager: psi = 0 keeps the volume, psi = phi flows along the normal", "[plasticity][druckerPrager]")
+TEST_CASE("druckerPrager: psi = 0 keeps the volume, psi = phi flows along the normal",
+          "[plasticity][druckerPrager]")
 {
     std::mt19937 random(5);
     int volumeKept = 0;
@@ -223,7 +236,8 @@ TEST_CASE("druckerPrager: psi = 0 keeps the volume, psi = phi flows along the no
             ++normal;
             const double j2 = std::sqrt(0.5 * (s.array() * s.array()).sum());
             const Mat<3> n = s / (2 * j2) + etaOf(35) / 3 * Mat<3>::Identity();
-            const Mat<3> across = plastic - (plastic.array() * n.array()).sum() / n.squaredNorm() * n;
+            const Mat<3> across =
+                plastic - (plastic.array() * n.array()).sum() / n.squaredNorm() * n;
             CHECK(across.norm() < 1e-8 * plastic.norm());
         }
     }
@@ -295,14 +309,16 @@ double planeStrainFlowResidual(double phi, double psi, const std::string& matchi
         const Mat<2> tau = point.kirchhoff(F);
         const double s1 = std::max(tau(0, 0), tau(1, 1));
         const double s3 = std::min(tau(0, 0), tau(1, 1));
-        residual = (s1 - s3) / 2 - (cohesion * std::cos(phi * degree) - (s1 + s3) / 2 * std::sin(phi * degree));
+        residual = (s1 - s3) / 2 -
+                   (cohesion * std::cos(phi * degree) - (s1 + s3) / 2 * std::sin(phi * degree));
     }
     REQUIRE(point.alpha() > 0.05);
     return residual;
 }
 } // namespace
 
-TEST_CASE("druckerPrager: planeStrain matching reproduces Mohr-Coulomb in plane strain", "[plasticity][druckerPrager]")
+TEST_CASE("druckerPrager: planeStrain matching reproduces Mohr-Coulomb in plane strain",
+          "[plasticity][druckerPrager]")
 {
     for (const double phi : {20.0, 30.0, 40.0})
     {
@@ -330,7 +346,8 @@ TEST_CASE("druckerPrager: planeStrain matching reproduces Mohr-Coulomb in plane 
 // deviatoric direction), so the returned principal stresses satisfy Mohr–Coulomb exactly,
 // (σ1 − σ3)/2 = c cos φ − (σ1 + σ3)/2 sin φ; the other cone does not (by hand, at φ = 30°
 // and σ3 = −10 c: Mohr–Coulomb's compression point lies 1.3 c outside the inner cone).
-TEST_CASE("druckerPrager: outer and inner cones are Mohr-Coulomb on the compression and extension meridians",
+TEST_CASE("druckerPrager: outer and inner cones are Mohr-Coulomb on the compression and extension "
+          "meridians",
           "[plasticity][druckerPrager]")
 {
     const auto mohrCoulombResidual = [](const Eigen::Vector3d& tau, double phi)
@@ -347,14 +364,18 @@ TEST_CASE("druckerPrager: outer and inner cones are Mohr-Coulomb on the compress
         // Extension: one larger strain, two equal more compressive ones.
         const Eigen::Vector3d extension(2e-2, -3e-2, -3e-2);
         for (const auto& [matching, onMeridian, offMeridian] :
-             {std::tuple{"outer", compression, extension}, std::tuple{"inner", extension, compression}})
+             {std::tuple{"outer", compression, extension},
+              std::tuple{"inner", extension, compression}})
         {
             INFO(matching);
-            test::MaterialPoint<3> on(dpText(phi, 0, cohesion, std::string("coneMatching ") + matching + ";"));
+            test::MaterialPoint<3> on(
+                dpText(phi, 0, cohesion, std::string("coneMatching ") + matching + ";"));
             const Eigen::Vector3d tau = returnedStress(on, onMeridian);
             REQUIRE(tau.sum() / 3.0 < 0.0); // on the cone, not at the apex
-            CHECK(std::abs(mohrCoulombResidual(tau, phi * degree)) < 1e-9 * std::abs(tau.minCoeff()));
-            test::MaterialPoint<3> off(dpText(phi, 0, cohesion, std::string("coneMatching ") + matching + ";"));
+            CHECK(std::abs(mohrCoulombResidual(tau, phi * degree)) <
+                  1e-9 * std::abs(tau.minCoeff()));
+            test::MaterialPoint<3> off(
+                dpText(phi, 0, cohesion, std::string("coneMatching ") + matching + ";"));
             CHECK(std::abs(mohrCoulombResidual(returnedStress(off, offMeridian), phi * degree)) >
                   0.01 * cohesion);
         }
@@ -370,7 +391,8 @@ TEST_CASE("druckerPrager: objectivity and elastic unloading", "[plasticity][druc
         const Mat<3> F1 = randomGradient(random, 0.01) * std::exp(-0.002);
         REQUIRE(point.commit(F1) > 0.0);
         const Mat<3> F = randomGradient(random, 0.01) * std::exp(-0.002);
-        const Mat<3> Q = Eigen::AngleAxisd(0.9, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
+        const Mat<3> Q =
+            Eigen::AngleAxisd(0.9, Eigen::Vector3d(0.3, -0.5, 0.8).normalized()).toRotationMatrix();
         const Mat<3> P = point.stress(F);
         CHECK((point.stress(Q * F) - Q * P).cwiseAbs().maxCoeff() < 1e-12 * P.norm());
         CHECK(point.energy(Q * F) == Approx(point.energy(F)).epsilon(1e-12));
@@ -409,13 +431,16 @@ TEST_CASE("druckerPrager: input checks", "[plasticity][druckerPrager][errors]")
     CHECK_THROWS_WITH(test::build<Material<2>>(dpText(0, 0), {}, 2),
                       Catch::Contains("frictionAngle = 0 must lie in (0, 90)"));
     CHECK_THROWS_WITH(test::build<Material<2>>(dpText(30, 0, 1e4, "coneMatching outside;"), {}, 2),
-                      Catch::Contains("inner") && Catch::Contains("outer") && Catch::Contains("planeStrainFlow"));
-    CHECK_THROWS_WITH(test::build<Material<1>>("type druckerPrager; E 1; rho 1; frictionAngle 30;", {}, 1),
-                      Catch::Contains("2D, 3D"));
+                      Catch::Contains("inner") && Catch::Contains("outer") &&
+                          Catch::Contains("planeStrainFlow"));
+    CHECK_THROWS_WITH(
+        test::build<Material<1>>("type druckerPrager; E 1; rho 1; frictionAngle 30;", {}, 1),
+        Catch::Contains("2D, 3D"));
     // Every matching has the same apex pressure c cot φ; the outer cone is the widest.
     for (const char* matching : {"planeStrain", "planeStrainFlow", "outer", "inner"})
     {
-        test::MaterialPoint<3> point(dpText(30, 0, cohesion, std::string("coneMatching ") + matching + ";"));
+        test::MaterialPoint<3> point(
+            dpText(30, 0, cohesion, std::string("coneMatching ") + matching + ";"));
         const Eigen::Vector3d tau = returnedStress(point, {5e-3, 4e-3, 3e-3});
         CHECK(pressure(tau) == Approx(cohesion * std::sqrt(3.0)).epsilon(1e-12));
     }
