@@ -4,7 +4,7 @@
 //   bar   { type line; start 0; end 0.1333; n 40; }
 //   ringA { type annulus; centre (-0.045 0); innerRadius 0.03; outerRadius 0.04; spacing 1e-3; }
 //
-// Types: line (1D), box (1D/2D/3D), disk and annulus (2D), cylinder (3D), vtu (import a point
+// Types: line (1D), box (1D/2D/3D), disk, annulus and polygon (2D), cylinder (3D), vtu (import a point
 // set). Lattice shapes are a square/cubic lattice of the given spacing clipped to the shape;
 // every particle gets the volume spacing^dim (line: half volumes at the ends by default, so
 // the volumes tile the bar exactly).

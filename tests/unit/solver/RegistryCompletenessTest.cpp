@@ -70,7 +70,7 @@ const std::map<std::string, std::map<int, Names>>& expected()
           {3, {"affine", "checkerboard", "random"}}}},
         {"generator",
          {{1, {"box", "line", "vtu"}},
-          {2, {"annulus", "box", "disk", "vtu"}},
+          {2, {"annulus", "box", "disk", "polygon", "vtu"}},
           {3, {"box", "cylinder", "vtu"}}}},
     };
     return table;
