@@ -263,3 +263,12 @@ sph_add_solver_run("geomaterial column collapse bit-identical on 2 ranks" 2
                    -set functions.surface.writeInterval=0.01 -set functions.particles.writeInterval=0.01)
 set_property(TEST "parallel:sphSolid geomaterial column collapse bit-identical on 2 ranks"
              APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy walls")
+# The collapse as a 3D slab between frictionless side walls (tutorials/geomaterials/
+# columnCollapse3D: five walls, the geostatic start in 3D, TL gradF's per-sample history, the
+# mid-plane surface profile), 2 000 particles, on 2 ranks (issue 33).
+sph_add_solver_run("geomaterial column collapse 3D slab bit-identical on 2 ranks" 2
+                   ${CMAKE_SOURCE_DIR}/tutorials/geomaterials/columnCollapse3D bitIdentical -threads 1
+                   -set endTime=0.01 -set writeInterval=0.005
+                   -set functions.surface.writeInterval=0.005 -set functions.particles.writeInterval=0.005)
+set_property(TEST "parallel:sphSolid geomaterial column collapse 3D slab bit-identical on 2 ranks"
+             APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy walls")

@@ -142,9 +142,11 @@ TEST_CASE("Active earth pressure, coarse: with psi = 0 the thrust is larger and 
     const Wall wall = runWall({"-set", "bodies.soil.material.dilatancyAngle=0"});
     INFO("psi 0: plateau " << wall.plateau << " (Rankine " << rankine << "), wedge " << wall.wedge
                            << " degrees");
-    // Between Rankine's 1/3 and Davis's 0.382 (docs/theory/geotechnics.md §E1), above the
-    // associative run's; the band between Arthur's 52.5 and Coulomb's 60 degrees. Measured:
-    // 0.3584 and 57.0 degrees (the associative run: 0.3106 and 62.3).
+    // At this spacing between Rankine's 1/3 and Davis's 0.382 (docs/theory/geotechnics.md
+    // §E1), above the associative run's, and the band between Arthur's 52.5 and Coulomb's 60
+    // degrees. Measured: 0.3584 and 57.0 degrees (the associative run: 0.3106 and 62.3). A
+    // regression at H/20 only: the psi = 0 thrust rises at every refinement (0.397 at H/40,
+    // 0.424 at H/80; the tutorial's README), it does not converge.
     CHECK(wall.plateau > rankine);
     CHECK(wall.plateau < 0.382);
     CHECK(wall.wedge > 50.0);
