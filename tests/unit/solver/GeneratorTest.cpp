@@ -59,7 +59,7 @@ TEST_CASE("box: cell-centred lattice tiles the box", "[generator]")
         Catch::Contains("not a whole number of spacings"));
 }
 
-TEST_CASE("polygon: a rectangle is box's lattice; a slope's particles, edges half-open; bad "
+TEST_CASE("polygon: a rectangle is box's lattice, a slope's particles, half-open edges, bad "
           "polygons refused",
           "[generator]")
 {
