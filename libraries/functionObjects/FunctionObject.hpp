@@ -30,8 +30,8 @@ namespace sph
 {
 
 // The energy balance at a time level (spec §10), kept by the solver's energy audit:
-//   total = kinetic + strain + wallPotential + dissipated - external - contact - wallWork
-//           - viscousWork,
+//   total = kinetic + strain + wallPotential + dissipated + damped - external - contact
+//           - wallWork - viscousWork,
 //   conserved by an exact integrator;
 //   drift = (total - total at the first level) / |total at the first level|.
 struct EnergyBalance
@@ -44,6 +44,7 @@ struct EnergyBalance
     double wallPotential = 0.0; // Σ ½ k δ² of the rigid walls (walls/WallSet.hpp)
     double wallWork = 0.0; // work of the walls since t = 0: moving, removing, friction
     double viscousWork = 0.0; // work of the artificial viscosity since t = 0 (<= 0: dissipated)
+    double damped = 0.0; // kinetic energy removed by kinetic damping since t = 0 (>= 0)
     // The change of Π at the reference moves since t = 0 (only when a function object asks for
     // it, needsMoveEnergy): their sum, the sum of the positive ones and the largest one.
     double moveSum = 0.0;
@@ -109,6 +110,8 @@ public:
         ParticleFields<D>* fields = nullptr;
         const std::vector<std::string>* wallNames = nullptr; // constant/walls, in order
         bool artificialViscosity = false; // a viscosity other than `none` is selected
+        bool kineticDamping = false;      // the integrator resets the velocities at KE peaks
+        double endTime = 0.0;             // controlDict's endTime [s]
         // Whether every particle's F is the map from its initial position. Not so where gradF
         // elasticState moves a plastic material's reference: its F is then a dilation frame
         // carried with the samples' elastic state (docs/theory/gradF-plastic.md §G2, §G11).

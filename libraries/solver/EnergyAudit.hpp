@@ -2,13 +2,14 @@
 // The energy audit of a run (spec §10, §12): the work of external (body) forces, of the
 // contact kicks and of each rigid wall accumulated over the steps, and the balance at a level,
 //
-//   total = Σ ½ m |v^n|^2 + Π^n + Φ^n + D - W_external - W_contact - W_walls - W_visc,
+//   total = Σ ½ m |v^n|^2 + Π^n + Φ^n + D + K_damped - W_external - W_contact - W_walls - W_visc,
 //   drift = (total - total_0)/|total_0|,
 //
 // with W_visc the work of the artificial viscosity (<= 0: the energy it dissipates is
 // -W_visc), Φ the walls' stored potential and W_walls their work (walls/WallSet.hpp), and D the
 // energy dissipated by the materials' committed plastic flow (docs/theory/plasticity.md
-// (P5.3)); Π^n of a material with history is its incremental energy, which holds the current
+// (P5.3)), K_damped the kinetic energy that kinetic damping removed (docs/theory/
+// geotechnics.md §E2); Π^n of a material with history is its incremental energy, which holds the current
 // step's dissipation until the commit moves it into D.
 //
 // One owner: the run log's drift and the `energy` function object's table both read it.
@@ -42,7 +43,7 @@ public:
     void declareState(RunScalars& scalars, const std::vector<std::string>& wallNames = {})
     {
         scalars.bind("externalWork", external_);
-        scalars.bind("contactWork", contact_);
+        scalars.bind("contactWork", contact_.work);
         scalars.bind("initialEnergy", initial_);
         scalars.bind("haveInitialEnergy", haveInitial_);
         wallWork_.assign(wallNames.size(), 0.0); // not resized again: the scalars point into it
@@ -57,6 +58,20 @@ public:
 
     // Only with an artificial viscosity other than `none` (its restart scalar and column).
     void declareViscousWork(RunScalars& scalars) { scalars.bind("viscousWork", viscous_); }
+
+    // Only with kinetic damping (its restart scalar and column).
+    void declareDamping(RunScalars& scalars) { scalars.bind("dampingWork", damping_.work); }
+
+    // Σ ½ m |v|^2 over the counted particles, completed over the ranks.
+    double kineticEnergy(const std::vector<double>& m, const std::vector<Vec<D>>& velocity) const
+    {
+        double kinetic = 0.0;
+        for (std::size_t a = 0; a < m.size(); ++a)
+        {
+            kinetic += counts(a) ? 0.5 * m[a] * velocity[a].squaredNorm() : 0.0;
+        }
+        return total(kinetic);
+    }
 
     // The viscous forces m a_visc do the work ½(F^n + F^{n+1})·(x^{n+1} - x^n) over a step,
     // the trapezoid rule the leapfrog's kinetic energy follows (as for wall friction): the half
@@ -118,35 +133,31 @@ public:
     // Energy dissipated by a commit of the materials' history.
     void addDissipation(double energy) { dissipated_ += energy; }
 
-    // A contact kick Δv applied to v^{n+1/2} over a step dt: its work is
-    // ΔW = Σ m Δv·(v^{n+1/2} + ½Δv + ½Δt a^{n+1}) (spec §12); the part known now is added now
-    // (v_after = v_before + Δv), the part with a^{n+1} by completeContactWork().
+    // A contact kick Δv applied to v^{n+1/2} over a step dt; its work W_contact is completed
+    // at the next level (kick(), completeKick()).
     void addContactKick(const std::vector<double>& m, const std::vector<Vec<D>>& deltaV,
                         const std::vector<Vec<D>>& vAfter, double dt)
     {
-        double work = 0.0;
-        for (std::size_t a = 0; a < m.size(); ++a)
-        {
-            work += counts(a) ? m[a] * deltaV[a].dot(vAfter[a] - 0.5 * deltaV[a]) : 0.0;
-        }
-        contact_ += total(work);
-        pendingKick_ = true;
-        kickDeltaT_ = dt;
+        kick(contact_, m, deltaV, vAfter, dt);
     }
     void completeContactWork(const std::vector<double>& m, const std::vector<Vec<D>>& deltaV,
                              const std::vector<Vec<D>>& acceleration)
     {
-        if (!pendingKick_)
-        {
-            return;
-        }
-        double work = 0.0;
-        for (std::size_t a = 0; a < m.size(); ++a)
-        {
-            work += counts(a) ? m[a] * deltaV[a].dot(acceleration[a]) : 0.0;
-        }
-        contact_ += 0.5 * kickDeltaT_ * total(work);
-        pendingKick_ = false;
+        completeKick(contact_, m, deltaV, acceleration);
+    }
+
+    // A reset of kinetic damping, Δv = -v^{n+1/2}: the energy it removes, K_damped, is minus
+    // the work of that kick, ½ Σ m |v^{n+1/2}|² + ½Δt Σ m v^{n+1/2}·a^{n+1} in the measure of
+    // the levels' kinetic energy (the second part is completed at the next level).
+    void addDampingKick(const std::vector<double>& m, const std::vector<Vec<D>>& deltaV,
+                        const std::vector<Vec<D>>& vAfter, double dt)
+    {
+        kick(damping_, m, deltaV, vAfter, dt);
+    }
+    void completeDampingWork(const std::vector<double>& m, const std::vector<Vec<D>>& deltaV,
+                             const std::vector<Vec<D>>& acceleration)
+    {
+        completeKick(damping_, m, deltaV, acceleration);
     }
 
     // The balance at a level with velocities v^n, strain energy Π^n and wall potential Φ^n;
@@ -155,14 +166,10 @@ public:
                           double strainEnergy, double wallPotential = 0.0)
     {
         EnergyBalance e;
-        for (std::size_t a = 0; a < m.size(); ++a)
-        {
-            e.kinetic += counts(a) ? 0.5 * m[a] * velocity[a].squaredNorm() : 0.0;
-        }
-        e.kinetic = total(e.kinetic);
+        e.kinetic = kineticEnergy(m, velocity);
         e.strain = strainEnergy;
         e.external = external_;
-        e.contact = contact_;
+        e.contact = contact_.work;
         e.wallPotential = wallPotential;
         for (const double work : wallWork_)
         {
@@ -170,11 +177,12 @@ public:
         }
         e.dissipated = dissipated_;
         e.viscousWork = viscous_;
+        e.damped = 0.0 - damping_.work; // not -0 before any reset
         e.moveSum = moveSum_;
         e.moveGain = moveGain_;
         e.moveLargest = moveLargest_;
-        e.total = e.kinetic + e.strain + e.wallPotential + e.dissipated - e.external - e.contact -
-                  e.wallWork - e.viscousWork;
+        e.total = e.kinetic + e.strain + e.wallPotential + e.dissipated + e.damped - e.external -
+                  e.contact - e.wallWork - e.viscousWork;
         if (!haveInitial_)
         {
             initial_ = e.total;
@@ -186,6 +194,44 @@ public:
     }
 
 private:
+    // The work of a velocity change Δv applied to v^{n+1/2} over a step dt (spec §12):
+    //   ΔW = Σ m Δv·(v^{n+1/2} + ½Δv + ½Δt a^{n+1});
+    // the part known at the kick (v_after = v_before + Δv) is added then, the part with
+    // a^{n+1} at the next level, once it is known.
+    struct Kick
+    {
+        double work = 0.0;
+        bool pending = false;
+        double deltaT = 0.0;
+    };
+    void kick(Kick& k, const std::vector<double>& m, const std::vector<Vec<D>>& deltaV,
+              const std::vector<Vec<D>>& vAfter, double dt)
+    {
+        double work = 0.0;
+        for (std::size_t a = 0; a < m.size(); ++a)
+        {
+            work += counts(a) ? m[a] * deltaV[a].dot(vAfter[a] - 0.5 * deltaV[a]) : 0.0;
+        }
+        k.work += total(work);
+        k.pending = true;
+        k.deltaT = dt;
+    }
+    void completeKick(Kick& k, const std::vector<double>& m, const std::vector<Vec<D>>& deltaV,
+                      const std::vector<Vec<D>>& acceleration)
+    {
+        if (!k.pending)
+        {
+            return;
+        }
+        double work = 0.0;
+        for (std::size_t a = 0; a < m.size(); ++a)
+        {
+            work += counts(a) ? m[a] * deltaV[a].dot(acceleration[a]) : 0.0;
+        }
+        k.work += 0.5 * k.deltaT * total(work);
+        k.pending = false;
+    }
+
     bool counts(std::size_t a) const { return !owned_ || (*owned_)[a] != 0; }
     double total(double local) const { return total_ ? total_(local) : local; }
 
@@ -207,7 +253,8 @@ private:
     double external_ = 0.0;
     double viscous_ = 0.0;         // W_visc
     bool viscousPending_ = false;  // the half of the last drift's viscous work with F^{n+1}
-    double contact_ = 0.0;
+    Kick contact_;                 // W_contact
+    Kick damping_;                 // -K_damped
     double dissipated_ = 0.0;
     double moveSum_ = 0.0;     // Σ ΔΠ over the reference moves
     double moveGain_ = 0.0;    // Σ max(ΔΠ, 0)
@@ -215,8 +262,6 @@ private:
     std::vector<double> wallWork_; // by wall
     double initial_ = 0.0;
     bool haveInitial_ = false;
-    bool pendingKick_ = false; // a kick whose a^{n+1} part is still to be added
-    double kickDeltaT_ = 0.0;
 };
 
 } // namespace sph

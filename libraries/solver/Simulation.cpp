@@ -133,6 +133,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         applyViscosity();
         applyWalls(step.dt);
         audit_.completeContactWork(particles_.m, contactDeltaV_, acceleration_);
+        audit_.completeDampingWork(particles_.m, dampingDeltaV_, acceleration_);
         const double dt = last ? 0.0 : step.dt;
         const bool outputDue = last || outputDueNow();
         // The function objects' restart state is that from before they see this level.
@@ -152,6 +153,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         refreshGhostPositions();
         followMovingParticles();
         applyContact(dt);
+        dampKinetic(dt);
         refreshGhostVelocities();
         checkOrder(dt);
         time_ = step.landsOnTarget ? step.target : time_ + dt;
@@ -484,6 +486,19 @@ void Simulation<D>::applyContact(double dt)
     state.ranks = distributed() ? &ranks_ : nullptr;
     contact_->apply(state, contactDeltaV_);
     audit_.addContactKick(particles_.m, contactDeltaV_, particles_.v, dt);
+}
+
+// Kinetic damping (docs/theory/geotechnics.md §E2) on the final v^{n+1/2}, after the contact
+// kick; the ghosts' copies are refreshed after it.
+template <int D>
+void Simulation<D>::dampKinetic(double dt)
+{
+    if (damping_ &&
+        damping_->afterStep(audit_.kineticEnergy(particles_.m, particles_.v), particles_.v,
+                            dampingDeltaV_))
+    {
+        audit_.addDampingKick(particles_.m, dampingDeltaV_, particles_.v, dt);
+    }
 }
 
 // Particles must not pass each other along a bar (1D; every rank of a distributed run learns

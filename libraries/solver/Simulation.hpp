@@ -40,6 +40,7 @@
 #include "solver/StateFile.hpp"
 #include "solver/StopRequest.hpp"
 #include "stabilisation/Impenetrability.hpp"
+#include "timeIntegration/KineticDamping.hpp"
 #include "timeIntegration/TimeIntegration.hpp"
 #include "walls/WallSet.hpp"
 
@@ -140,6 +141,7 @@ private:
     void drift(double dt);                        // x^n, v, a^n -> x^{n+1}, v^{n+1/2}; W_g,
                                                   //   W_walls (motion, friction)
     void applyContact(double dt);                 // x^{n+1}, F(x^{n+1}) -> Δv, W_contact
+    void dampKinetic(double dt);                  // v^{n+1/2} -> 0 at a peak of K; K_damped
     void checkOrder(double dt);                   // 1D: x^{n+1} -> failure if out of order
     WaveSpeedBound waveSpeedBound() const;
     double waveSpeedOf(std::size_t b, std::size_t first, std::size_t n) const;
@@ -234,6 +236,7 @@ private:
     std::unique_ptr<ArtificialViscosity<D>> viscosity_;
     std::unique_ptr<Impenetrability<D>> impenetrability_; // null: not in sphSchemes
     std::unique_ptr<TimeIntegration<D>> integrator_;
+    std::optional<KineticDamping<D>> damping_; // the integrator's kineticDamping
     std::vector<std::unique_ptr<FunctionObject<D>>> functionObjects_;
     std::unique_ptr<ReferenceManager<D>> reference_;
     std::vector<std::vector<std::size_t>> barOrder_; // 1D: each body's particles sorted by X
@@ -251,6 +254,7 @@ private:
     std::vector<Vec<D>> velocitySync_;   // v^n
     std::vector<Vec<D>> previousX_;      // x of the last good level
     std::vector<Vec<D>> contactDeltaV_;
+    std::vector<Vec<D>> dampingDeltaV_;  // the last reset's -v^{n+1/2} (kinetic damping only)
     std::vector<Vec<D>> viscousAcceleration_; // a_visc^n (artificial viscosity only)
     std::vector<Mat<D>> nextF_;
     std::vector<Mat<D>> nextP_;

@@ -196,6 +196,14 @@ void Simulation<D>::declareFields()
     {
         audit_.declareViscousWork(runScalars_);
     }
+    if (damping_)
+    {
+        f.bind(FieldSpec::vector("dampingVelocityChange", "the last reset of kinetic damping, "
+                                                          "-v^{n+1/2} [m/s]"),
+               dampingDeltaV_);
+        damping_->declareState(runScalars_);
+        audit_.declareDamping(runScalars_);
+    }
     if (historyMaterials_)
     {
         audit_.declareDissipation(runScalars_);

@@ -54,6 +54,10 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
     integrator_ = selectModel<TimeIntegration<D>>(
         schemes.timeIntegration ? *schemes.timeIntegration : leapfrog,
         {control.courant, control.timeStepUpdateInterval}, D, {"leapfrog", {}});
+    if (integrator_->kineticDamping())
+    {
+        damping_.emplace();
+    }
 
     setupBodies(dicts.get("bodies"));
     setupWalls();
@@ -95,6 +99,10 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
     if (contact_->active())
     {
         contactDeltaV_.assign(n, Vec<D>::Zero());
+    }
+    if (damping_)
+    {
+        dampingDeltaV_.assign(n, Vec<D>::Zero());
     }
     nextF_.assign(n, Mat<D>::Identity());
     nextP_.assign(n, Mat<D>::Zero());
@@ -254,6 +262,8 @@ void Simulation<D>::setupFunctionObjects()
         args.fields = &fields_;
         args.wallNames = &walls_->names();
         args.artificialViscosity = viscosity_->active();
+        args.kineticDamping = damping_.has_value();
+        args.endTime = control_.endTime;
         args.totalDeformationGradient = !(formulation_->updatesReference() &&
                                           scheme_->movesParticleHistory() && historyMaterials_);
         args.ranks = &ranks_;

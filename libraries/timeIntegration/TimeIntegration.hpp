@@ -83,6 +83,9 @@ public:
     // over its probe once, before the first step, and chooseTimeStep() calls it at the probes).
     virtual std::optional<OperatorProbeRequest> operatorProbe() const { return std::nullopt; }
     virtual void setOperatorFrequency(OperatorFrequency<D> probe) { (void)probe; }
+    // Whether the solver resets every velocity to zero at each peak of the kinetic energy
+    // (kinetic damping, docs/theory/geotechnics.md §E2: a static state by dynamic relaxation).
+    virtual bool kineticDamping() const { return false; }
     // A few words on the current step for the run log's progress line ("" for none).
     virtual std::string stepNote() const { return ""; }
     // The velocity at the time level, v^n, from the stored velocity and a^n.

@@ -11,8 +11,10 @@
 //              viscosity since t = 0, <= 0 (the energy it dissipated is -viscousWork),
 //   dissipated (only when a material keeps a plastic history) = energy dissipated by plastic
 //              flow since t = 0,
-//   total    = kinetic + strain + wallPotential + dissipated - external - contact - wallWork
-//              - viscousWork (conserved by an exact integrator),
+//   damped (only with timeIntegration's kineticDamping) = kinetic energy its resets of the
+//              velocities removed since t = 0 (docs/theory/geotechnics.md §E2),
+//   total    = kinetic + strain + wallPotential + dissipated + damped - external - contact
+//              - wallWork - viscousWork (conserved by an exact integrator),
 //   drift    = (total - total(0)) / |total(0)|,
 //   moveEnergySum, moveEnergyGain, moveEnergyLargest (only with referenceMoves yes) = what the
 //              moves of the reference configuration changed Π by since t = 0, at fixed
@@ -74,6 +76,11 @@ public:
         {
             columns.push_back("dissipated");
         }
+        withDamping_ = args.kineticDamping;
+        if (withDamping_)
+        {
+            columns.push_back("damped");
+        }
         columns.insert(columns.end(), {"total", "drift"});
         if (withMoves_)
         {
@@ -132,6 +139,10 @@ public:
         if (withDissipation_)
         {
             row.push_back(e.dissipated);
+        }
+        if (withDamping_)
+        {
+            row.push_back(e.damped);
         }
         row.insert(row.end(), {e.total, e.drift});
         if (withMoves_)
@@ -211,6 +222,7 @@ private:
     bool withWalls_ = false; // the case has constant/walls: their columns
     bool withViscosity_ = false; // an artificial viscosity is selected: its column
     bool withDissipation_ = false; // a material keeps a plastic history: its column
+    bool withDamping_ = false;     // kinetic damping: its column
     bool withMoves_ = false;       // referenceMoves yes: the moves' columns
     double moveGain_ = 0.0;        // of the last row (the audit keeps the restart state)
     double moveLargest_ = 0.0;

@@ -31,6 +31,12 @@ double planeStrainXi(double angle)
 }
 } // namespace
 
+double ConeMatching::apexPressure(Kind kind, double phi, double psi, double cohesion)
+{
+    const Cone cone = of(kind, phi, psi);
+    return cone.xi * cohesion / cone.eta;
+}
+
 ConeMatching::Cone ConeMatching::of(Kind kind, double phi, double psi)
 {
     switch (kind)
@@ -91,16 +97,33 @@ template <int D> Schema DruckerPrager<D>::schema()
                                        "any psi), outer (triaxial compression), inner "
                                        "(triaxial extension)")
                  .choices(ConeMatching::names())
-                 .defaultValue("planeStrain"));
+                 .defaultValue("planeStrain"))
+        .add(Key::real("strengthReduction",
+                       "strength reduction factor F (slope safety, docs/theory/geotechnics.md "
+                       "§E2): the material has cohesion c/F, friction angle atan(tan(phi)/F), "
+                       "dilatancy at most that angle and tensileStrength/F; its elasticity is "
+                       "unchanged, its at-rest K0 is 1 - sin of the reduced angle")
+                 .positive()
+                 .defaultValue("1"));
+}
+
+ReducedStrength ReducedStrength::of(double phi, double psi, double cohesion, double factor)
+{
+    ReducedStrength r;
+    r.frictionAngle = std::atan(std::tan(phi) / factor);
+    r.dilatancyAngle = std::min(psi, r.frictionAngle);
+    r.cohesion = cohesion / factor;
+    return r;
 }
 
 template <int D>
 DruckerPrager<D>::DruckerPrager(const Params& params, const typename Material<D>::Args& args)
-    : ReturnMapPlasticity<D, DruckerPrager<D>>(params, args), cohesion_(params.real("cohesion"))
+    : ReturnMapPlasticity<D, DruckerPrager<D>>(params, args)
 {
     const double degree = std::numbers::pi / 180.0;
     const double phi = params.real("frictionAngle");
     const double psi = params.real("dilatancyAngle");
+    const double reduction = params.real("strengthReduction");
     if (psi > phi)
     {
         params.fail("dilatancyAngle",
@@ -112,24 +135,36 @@ DruckerPrager<D>::DruckerPrager(const Params& params, const typename Material<D>
                      "change) is usual for soils, " +
                      formatNumber(phi) + " is associative."});
     }
-    atRest_ = 1.0 - std::sin(phi * degree);
+    const ReducedStrength reduced =
+        ReducedStrength::of(phi * degree, psi * degree, params.real("cohesion"), reduction);
+    // Jaky's K0 of the reduced soil (geotechnics.md §E2): the soil's own can lie outside the
+    // reduced cone (φ = 20°, F = 2).
+    atRest_ = 1.0 - std::sin(reduced.frictionAngle);
+    cohesion_ = reduced.cohesion;
     const ConeMatching::Kind kind = ConeMatching::parse(params.word("coneMatching"));
-    const ConeMatching::Cone cone = ConeMatching::of(kind, phi * degree, psi * degree);
+    const ConeMatching::Cone cone =
+        ConeMatching::of(kind, reduced.frictionAngle, reduced.dilatancyAngle);
     eta_ = cone.eta;
     xi_ = cone.xi;
     etaBar_ = cone.etaBar;
     apexPressure_ = xi_ * cohesion_ / eta_;
-    tensileStrength_ =
-        params.has("tensileStrength") ? params.real("tensileStrength") : apexPressure_;
-    if (tensileStrength_ > apexPressure_)
+    // The cut-off is checked as given, against the unreduced cone's apex, then reduced with
+    // the strength. Every matching has its apex at ξ c/η = c cot φ, which F does not change
+    // (c/F · F cot φ): the reduced cut-off stays below the reduced apex.
+    const double givenApex = ConeMatching::apexPressure(kind, phi * degree, psi * degree,
+                                                        params.real("cohesion"));
+    const double given =
+        params.has("tensileStrength") ? params.real("tensileStrength") : givenApex;
+    if (given > givenApex)
     {
         params.fail("tensileStrength",
-                    "druckerPrager: tensileStrength " + formatNumber(tensileStrength_) +
-                        " exceeds the cone's apex pressure xi c/eta = " +
-                        formatNumber(apexPressure_) + ": no stress on the cone has that pressure",
-                    {"Use a value in [0, " + formatNumber(apexPressure_) +
+                    "druckerPrager: tensileStrength " + formatNumber(given) +
+                        " exceeds the cone's apex pressure xi c/eta = " + formatNumber(givenApex) +
+                        ": no stress on the cone has that pressure",
+                    {"Use a value in [0, " + formatNumber(givenApex) +
                      "], or leave the key out (the apex)."});
     }
+    tensileStrength_ = params.has("tensileStrength") ? given / reduction : apexPressure_;
 }
 
 template class DruckerPrager<2>;

@@ -60,6 +60,19 @@ struct ConeMatching
     }
     static Kind parse(const std::string& name);
     static Cone of(Kind kind, double phi, double psi);
+    // ξ c/η: the largest mean stress (tension) on the cone.
+    static double apexPressure(Kind kind, double phi, double psi, double cohesion);
+};
+
+// The strength a factor F leaves (docs/theory/geotechnics.md (E2.1)), angles in radians:
+// tan φ_F = tan φ / F, c_F = c / F, ψ_F = min(ψ, φ_F) (the flow may not dilate more than the
+// reduced soil's friction allows).
+struct ReducedStrength
+{
+    double frictionAngle;
+    double dilatancyAngle;
+    double cohesion;
+    static ReducedStrength of(double phi, double psi, double cohesion, double factor);
 };
 
 template <int D> class DruckerPrager : public ReturnMapPlasticity<D, DruckerPrager<D>>

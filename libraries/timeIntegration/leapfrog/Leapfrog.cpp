@@ -18,6 +18,9 @@
 //   probeInterval   | steps between probes, >= 1; with waveSpeed, given: the | 10 (operator),
 //                   | probe only reports ω̃ Δt (progress line)               | none (waveSpeed)
 //   probeIterations | power iterations per probe, >= 1                      | 2
+//   kineticDamping  | yes: every velocity is set to zero where the total    | no
+//                   | kinetic energy of the half steps passes a peak (a      |
+//                   | static state by dynamic relaxation; geotechnics.md §E2)|
 #include "particles/Parallel.hpp"
 #include "timeIntegration/TimeIntegration.hpp"
 
@@ -55,11 +58,17 @@ public:
             .add(Key::integer("probeIterations", "power iterations per measurement (stepBound "
                                                  "operator); the first level makes 50")
                      .min(1)
-                     .defaultValue("2"));
+                     .defaultValue("2"))
+            .add(Key::boolean("kineticDamping",
+                              "set every velocity to zero at each peak of the kinetic energy, "
+                              "to reach a static state (dynamic relaxation: the motion is not "
+                              "physical, its end state is; docs/theory/geotechnics.md §E2)")
+                     .defaultValue("no"));
     }
 
     Leapfrog(const Params& params, const typename TimeIntegration<D>::Args& args)
-        : courant_(args.courant), interval_(args.timeStepUpdateInterval)
+        : courant_(args.courant), interval_(args.timeStepUpdateInterval),
+          kineticDamping_(params.boolean("kineticDamping"))
     {
         controlsStep_ = params.word("stepBound") == "operator";
         if (controlsStep_ || params.has("probeInterval"))
@@ -93,6 +102,7 @@ public:
     }
 
     std::string velocityField() const override { return "velocityHalfStep"; }
+    bool kineticDamping() const override { return kineticDamping_; }
 
     void attach(std::vector<Vec<D>>& velocity, ParticleFields<D>& fields,
                 RunScalars& scalars) override
@@ -252,6 +262,7 @@ private:
     long interval_;
     std::optional<OperatorProbeRequest> probe_; // a probe runs (stepBound operator, or probeInterval)
     bool controlsStep_ = false;                 // stepBound operator: the step follows it
+    bool kineticDamping_ = false;
     OperatorFrequency<D> frequency_;
     std::vector<Vec<D>> mode_;    // y of §T3 (restart data)
     double margin_ = 0.0;         // κ = ω̃_0 Δt_0

@@ -8,7 +8,9 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <iomanip>
 #include <numbers>
+#include <sstream>
 #include <tuple>
 
 using namespace sph;
@@ -444,4 +446,68 @@ TEST_CASE("druckerPrager: input checks", "[plasticity][druckerPrager][errors]")
         const Eigen::Vector3d tau = returnedStress(point, {5e-3, 4e-3, 3e-3});
         CHECK(pressure(tau) == Approx(cohesion * std::sqrt(3.0)).epsilon(1e-12));
     }
+}
+
+// strengthReduction F (docs/theory/geotechnics.md (E2.1)) is the material with c/F, tan φ/F,
+// ψ capped at the reduced φ and tensileStrength/F, and Jaky's K0 of the reduced angle.
+TEST_CASE("druckerPrager: strengthReduction is the material with the reduced strength",
+          "[plasticity][druckerPrager]")
+{
+    const double F = 1.6;
+    const double phiF = std::atan(std::tan(30 * degree) / F) / degree; // 19.84°
+    std::mt19937 random(11);
+    struct Case
+    {
+        double psi;      // of the soil
+        double psiF;     // of the reduced soil
+        std::string cut; // its cut-off, as given and reduced
+        std::string cutF;
+    };
+    for (const Case& c : {Case{0.0, 0.0, "", ""}, Case{10.0, 10.0, "", ""},
+                          Case{30.0, phiF, "", ""}, // associative stays associative
+                          Case{10.0, 10.0, "tensileStrength 8000;", "tensileStrength 5000;"}})
+    {
+        INFO("psi " << c.psi << " " << c.cut);
+        test::MaterialPoint<3> reduced(dpText(30, c.psi, cohesion,
+                                              "coneMatching planeStrainFlow; strengthReduction 1.6; " + c.cut));
+        // (the angles to 17 digits: dpText's formatNumber would round them)
+        std::ostringstream text;
+        text << std::setprecision(17) << "type druckerPrager; E 7.2e6; nu 0.2; rho 2000; "
+             << "frictionAngle " << phiF << "; dilatancyAngle " << c.psiF << "; cohesion "
+             << cohesion / F << "; coneMatching planeStrainFlow; " << c.cutF;
+        test::MaterialPoint<3> direct(text.str());
+        double largest = 0.0;
+        for (int step = 1; step <= 20; ++step)
+        {
+            const Mat<3> F3 = randomGradient(random, 0.004) * std::exp(0.0005 * step);
+            const Mat<3> a = reduced.kirchhoff(F3);
+            const Mat<3> b = direct.kirchhoff(F3);
+            largest = std::max(largest, b.norm());
+            CHECK((a - b).norm() <= 1e-10 * b.norm());
+            reduced.commit(F3);
+            direct.commit(F3);
+        }
+        CHECK(reduced.alpha() > 0.0); // it yielded
+        CHECK(reduced.alpha() == Approx(direct.alpha()).epsilon(1e-9));
+    }
+    // Jaky's K0 of the reduced soil, inside its cone; the elasticity is the soil's.
+    const auto soil = test::build<Material<2>>(dpText(30, 0, cohesion, "strengthReduction 1.6;"), {}, 2);
+    CHECK(soil->atRestCoefficient() == Approx(1 - std::sin(phiF * degree)).epsilon(1e-12));
+    // A reduction makes a weaker material: from a virgin point (ψ = 0: the return keeps the
+    // pressure) the reduced one returns to a smaller shear stress at the same pressure.
+    for (int trial = 0; trial < 20; ++trial)
+    {
+        test::MaterialPoint<3> strong(dpText(30, 0, cohesion, ""));
+        test::MaterialPoint<3> weak(dpText(30, 0, cohesion, "strengthReduction 1.6;"));
+        const Mat<3> F3 = randomGradient(random, 0.01);
+        const Eigen::Vector3d s = Eigen::SelfAdjointEigenSolver<Mat<3>>(strong.kirchhoff(F3)).eigenvalues();
+        const Eigen::Vector3d w = Eigen::SelfAdjointEigenSolver<Mat<3>>(weak.kirchhoff(F3)).eigenvalues();
+        CHECK(pressure(w) == Approx(pressure(s)).epsilon(1e-12));
+        CHECK(rootJ2(w) <= rootJ2(s) * (1 + 1e-12));
+    }
+    // The cut-off is checked as given (the apex c cot φ = 17320.5 Pa), whatever F is.
+    CHECK_THROWS_WITH(test::build<Material<3>>(dpText(30, 0, 1e4, "tensileStrength 2e4; "
+                                                                   "strengthReduction 2;"),
+                                               {}, 3),
+                      Catch::Contains("exceeds the cone's apex pressure"));
 }
