@@ -60,7 +60,7 @@ public:
     void declareViscousWork(RunScalars& scalars) { scalars.bind("viscousWork", viscous_); }
 
     // Only with kinetic damping (its restart scalar and column).
-    void declareDamping(RunScalars& scalars) { scalars.bind("dampingWork", damping_.work); }
+    void declareDamping(RunScalars& scalars) { scalars.bind("dampedEnergy", damped_); }
 
     // Σ ½ m |v|^2 over the counted particles, completed over the ranks.
     double kineticEnergy(const std::vector<double>& m, const std::vector<Vec<D>>& velocity) const
@@ -146,18 +146,32 @@ public:
         completeKick(contact_, m, deltaV, acceleration);
     }
 
-    // A reset of kinetic damping, Δv = -v^{n+1/2}: the energy it removes, K_damped, is minus
-    // the work of that kick, ½ Σ m |v^{n+1/2}|² + ½Δt Σ m v^{n+1/2}·a^{n+1} in the measure of
-    // the levels' kinetic energy (the second part is completed at the next level).
-    void addDampingKick(const std::vector<double>& m, const std::vector<Vec<D>>& deltaV,
-                        const std::vector<Vec<D>>& vAfter, double dt)
+    // A reset of kinetic damping after a step of `dt` (geotechnics.md (E2.3)): the particles
+    // are at rest at the level x^{n+1}, where the undamped step would have had
+    // v^{n+1} = v^{n+1/2} + ½Δt a^{n+1}; the kinetic energy that removes, Σ ½ m |v^{n+1}|², is
+    // booked at that level, once a^{n+1} is known.
+    void addDampingReset(double dt)
     {
-        kick(damping_, m, deltaV, vAfter, dt);
+        dampingPending_ = true;
+        dampingDeltaT_ = dt;
     }
-    void completeDampingWork(const std::vector<double>& m, const std::vector<Vec<D>>& deltaV,
-                             const std::vector<Vec<D>>& acceleration)
+    void completeDamping(const std::vector<double>& m, const std::vector<Vec<D>>& removed,
+                         const std::vector<Vec<D>>& acceleration)
     {
-        completeKick(damping_, m, deltaV, acceleration);
+        if (!dampingPending_)
+        {
+            return;
+        }
+        double energy = 0.0;
+        for (std::size_t a = 0; a < m.size(); ++a)
+        {
+            energy += counts(a) ? 0.5 * m[a] *
+                                      (removed[a] + 0.5 * dampingDeltaT_ * acceleration[a])
+                                          .squaredNorm()
+                                : 0.0;
+        }
+        damped_ += total(energy);
+        dampingPending_ = false;
     }
 
     // The balance at a level with velocities v^n, strain energy Π^n and wall potential Φ^n;
@@ -177,7 +191,7 @@ public:
         }
         e.dissipated = dissipated_;
         e.viscousWork = viscous_;
-        e.damped = 0.0 - damping_.work; // not -0 before any reset
+        e.damped = damped_;
         e.moveSum = moveSum_;
         e.moveGain = moveGain_;
         e.moveLargest = moveLargest_;
@@ -254,7 +268,9 @@ private:
     double viscous_ = 0.0;         // W_visc
     bool viscousPending_ = false;  // the half of the last drift's viscous work with F^{n+1}
     Kick contact_;                 // W_contact
-    Kick damping_;                 // -K_damped
+    double damped_ = 0.0;          // K_damped
+    bool dampingPending_ = false;  // a reset whose energy is booked at the next level
+    double dampingDeltaT_ = 0.0;
     double dissipated_ = 0.0;
     double moveSum_ = 0.0;     // Σ ΔΠ over the reference moves
     double moveGain_ = 0.0;    // Σ max(ΔΠ, 0)

@@ -133,7 +133,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         applyViscosity();
         applyWalls(step.dt);
         audit_.completeContactWork(particles_.m, contactDeltaV_, acceleration_);
-        audit_.completeDampingWork(particles_.m, dampingDeltaV_, acceleration_);
+        audit_.completeDamping(particles_.m, dampingDeltaV_, acceleration_);
         const double dt = last ? 0.0 : step.dt;
         const bool outputDue = last || outputDueNow();
         // The function objects' restart state is that from before they see this level.
@@ -489,15 +489,17 @@ void Simulation<D>::applyContact(double dt)
 }
 
 // Kinetic damping (docs/theory/geotechnics.md §E2) on the final v^{n+1/2}, after the contact
-// kick; the ghosts' copies are refreshed after it.
+// kick: at a peak of K the particles are at rest at x^{n+1}; the ghosts' copies are refreshed
+// after it.
 template <int D>
 void Simulation<D>::dampKinetic(double dt)
 {
     if (damping_ &&
-        damping_->afterStep(audit_.kineticEnergy(particles_.m, particles_.v), particles_.v,
-                            dampingDeltaV_))
+        damping_->peakPassed(audit_.kineticEnergy(particles_.m, particles_.v), particles_.v,
+                             dampingDeltaV_))
     {
-        audit_.addDampingKick(particles_.m, dampingDeltaV_, particles_.v, dt);
+        integrator_->restAtLevel();
+        audit_.addDampingReset(dt);
     }
 }
 

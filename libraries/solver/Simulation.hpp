@@ -254,7 +254,7 @@ private:
     std::vector<Vec<D>> velocitySync_;   // v^n
     std::vector<Vec<D>> previousX_;      // x of the last good level
     std::vector<Vec<D>> contactDeltaV_;
-    std::vector<Vec<D>> dampingDeltaV_;  // the last reset's -v^{n+1/2} (kinetic damping only)
+    std::vector<Vec<D>> dampingDeltaV_;  // the v^{n+1/2} the last reset removed (kinetic damping)
     std::vector<Vec<D>> viscousAcceleration_; // a_visc^n (artificial viscosity only)
     std::vector<Mat<D>> nextF_;
     std::vector<Mat<D>> nextP_;

@@ -198,8 +198,8 @@ void Simulation<D>::declareFields()
     }
     if (damping_)
     {
-        f.bind(FieldSpec::vector("dampingVelocityChange", "the last reset of kinetic damping, "
-                                                          "-v^{n+1/2} [m/s]"),
+        f.bind(FieldSpec::vector("dampedVelocity", "the half-step velocity the last reset of "
+                                                   "kinetic damping removed [m/s]"),
                dampingDeltaV_);
         damping_->declareState(runScalars_);
         audit_.declareDamping(runScalars_);

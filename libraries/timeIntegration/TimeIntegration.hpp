@@ -86,6 +86,10 @@ public:
     // Whether the solver resets every velocity to zero at each peak of the kinetic energy
     // (kinetic damping, docs/theory/geotechnics.md §E2: a static state by dynamic relaxation).
     virtual bool kineticDamping() const { return false; }
+    // Kinetic damping's reset, after a step x^n -> x^{n+1}: every velocity is zero at the level
+    // x^{n+1}, and the next step starts from rest there as a run starts (only called when
+    // kineticDamping() is true).
+    virtual void restAtLevel() {}
     // A few words on the current step for the run log's progress line ("" for none).
     virtual std::string stepNote() const { return ""; }
     // The velocity at the time level, v^n, from the stored velocity and a^n.

@@ -103,6 +103,16 @@ public:
 
     std::string velocityField() const override { return "velocityHalfStep"; }
     bool kineticDamping() const override { return kineticDamping_; }
+    // v^{n+1} = 0: the stored velocity becomes the level's (zero), and the next kick is the
+    // start's half kick, v^{n+3/2} = ½Δt a^{n+1}.
+    void restAtLevel() override
+    {
+        for (Vec<D>& v : *v_)
+        {
+            v.setZero();
+        }
+        halfStep_ = false;
+    }
 
     void attach(std::vector<Vec<D>>& velocity, ParticleFields<D>& fields,
                 RunScalars& scalars) override
