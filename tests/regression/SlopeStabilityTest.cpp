@@ -2,11 +2,11 @@
 // (phi' = 20 degrees, c'/(gamma H) = 0.05, psi = 0, geostatic start) at 0.5 m (880 particles),
 // TL none, run to rest by kinetic damping for the tutorial's 20 s at two strength reduction
 // factors on either side of its factor of safety (G&L: 1.4; Bishop's simplified method 1.378;
-// the study at this spacing: between 1.35 and 1.4). Measured: F = 1.3 at rest (the largest
-// displacement grew 0.73 times as much in the last quarter as in the third), F = 1.6 fails
-// (it ran away: 1.7 m). The checks fail a criterion that calls every run at rest or every run
-// failing, a strength reduction that does not weaken the soil, and a damped run whose energy
-// balance does not close.
+// the study at this spacing: between 1.40 and 1.45). Measured: F = 1.3 stands (at rest, the
+// largest displacement grew 0.17 times as much in the last quarter as in the third, 2.7 cm in
+// all), F = 1.6 fails (still sliding at 20 s, 1.72 m). The checks fail a criterion that calls
+// every run at rest or every run failing, a strength reduction that does not weaken the soil,
+// and a damped run whose energy balance does not close.
 #include "support/CaseRunner.hpp"
 
 #include <algorithm>
@@ -65,7 +65,7 @@ TEST_CASE("slope by strength reduction: at rest below the factor of safety, fail
     INFO("F 1.3: ratio " << stable.ratio << ", largest " << stable.largest << " m");
     CHECK(stable.atRest == 1.0);
     CHECK(stable.ratio < 0.85);
-    CHECK(stable.largest < 0.05); // centimetres at most (settlement, a corner)
+    CHECK(stable.largest < 0.1); // within the criterion's 5 gamma H^2/E = 10 cm
 
     const Slope failing = runSlope(1.6);
     INFO("F 1.6: ratio " << failing.ratio << ", largest " << failing.largest << " m");
