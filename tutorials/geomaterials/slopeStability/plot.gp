@@ -16,7 +16,7 @@ set palette defined (0 "#f7f7f7", 0.25 "#9ecae1", 0.5 "#3182bd", 0.75 "#e6550d",
 set key below
 set title "Slope of Griffiths and Lane (1999), example 1: how far the soil moved (F above the factor of safety)"
 plot run."/failureSurface.dat" using 1:2:3 with points pt 7 ps 0.5 lc palette notitle, \
-     run."/failureLine.dat" using 1:2 with points pt 6 ps 1.0 lc rgb "black" title "base of the sliding mass (half the largest motion)", \
+     run."/failureLine.dat" using 1:2 with points pt 6 ps 1.0 lc rgb "black" title "base of the sliding mass (half its displacement)", \
      "bishopCircle.dat" using 1:2 with lines lw 2 lc rgb "#31a354" title "Bishop's critical circle, F_s = 1.378", \
      "-" using 1:2 with lines lw 1 lc rgb "gray30" title "the slope"
 0 10
