@@ -102,7 +102,7 @@ public:
         }
         return {{"displacementThirdQuarter", third()},
                 {"displacementLastQuarter", last()},
-                {"displacementRatio", third() > 0.0 ? last() / third() : 0.0},
+                {"displacementRatio", ratio()},
                 {"largestDisplacement", displacement_[2]},
                 {"dampedLastQuarter", damped_[2] - damped_[1]},
                 {"atRest", atRest() ? 1.0 : 0.0}};
@@ -129,7 +129,7 @@ public:
                       "third quarter of the run and by %.4g m in the last (ratio %.3f; at rest if "
                       "below %.3g times the third quarter's, or below %.3g m): %s",
                       this->name().c_str(), displacement_[2], third(), last(),
-                      third() > 0.0 ? last() / third() : 0.0, ratio_, tolerance_,
+                      ratio(), ratio_, tolerance_,
                       atRest() ? "at rest" : "not at rest");
         return {line};
     }
@@ -164,6 +164,7 @@ private:
     bool due(double time) const { return next_ < 3 && time >= marks_[next_] * (1.0 - 1e-12); }
     double third() const { return displacement_[1] - displacement_[0]; }
     double last() const { return displacement_[2] - displacement_[1]; }
+    double ratio() const { return third() > 0.0 ? last() / third() : 0.0; } // Δ4/Δ3
     bool atRest() const { return last() < std::max(ratio_ * third(), tolerance_); }
 
     static double meanSpacing(const ParticleSet<D>& p)

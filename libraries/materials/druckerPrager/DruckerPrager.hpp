@@ -128,13 +128,14 @@ public:
     double atRestCoefficient() const override { return atRest_; }
 
 private:
-    double eta_;          // η
-    double xi_;           // ξ
-    double etaBar_;       // η̄
-    double cohesion_;     // c
+    // The cone of the reduced strength (strengthReduction F, ReducedStrength; F = 1 by default)
+    double eta_;          // η of φ_F
+    double xi_;           // ξ of φ_F
+    double etaBar_;       // η̄ of ψ_F
+    double cohesion_;     // c/F
     double apexPressure_; // ξ c/η
-    double tensileStrength_;
-    double atRest_; // 1 − sin φ
+    double tensileStrength_; // σt/F
+    double atRest_;       // 1 − sin φ_F
 };
 
 template <int D>
