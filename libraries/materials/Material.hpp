@@ -165,6 +165,16 @@ public:
         (void)from;
         (void)to;
     }
+    // rebaseHistory() for count packed states `stride` apart, state j from from[j], all to
+    // the same `to` (a particle's stress samples at a move).
+    virtual void rebaseHistories(double* states, std::size_t stride, std::size_t count,
+                                 const Mat<D>* from, const Mat<D>& to) const
+    {
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            rebaseHistory(states + j * stride, from[j], to);
+        }
+    }
     // The same for particle a's own committed state (its be at `to` is the one it had at
     // `from`).
     virtual void rebaseParticleHistory(std::size_t a, const Mat<D>& from, const Mat<D>& to)

@@ -88,37 +88,49 @@ public:
     // V0 τ:Δεp.
     template <int N>
     void returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha, FlowLanes<N>& flow) const;
-    // The elastic law with the tension cut-off in it (P9.5): Hencky's, but the volumetric
-    // stress p = min(K εv, σt): strain beyond σt/K opens voids that close again without
-    // stress.
-    Eigen::Vector3d kirchhoffOf(const Eigen::Vector3d& eps) const
+    // The elastic law with the tension cut-off in it (P9.5), at N points: Hencky's, but the
+    // volumetric stress p = min(K εv, σt): strain beyond σt/K opens voids that close again
+    // without stress.
+    template <int N> void kirchhoffLanesOf(const DeviatorLanes<N>& e, Lane<N> (&tau)[3]) const
     {
-        const double ev = eps.sum();
-        return 2.0 * this->law_.mu * (eps - Eigen::Vector3d::Constant(ev / 3.0)) +
-               Eigen::Vector3d::Constant(std::min(this->law_.K * ev, tensileStrength_));
+        for (int k = 0; k < 3; ++k)
+        {
+            for (int i = 0; i < N; ++i)
+            {
+                tau[k][i] = 2.0 * this->law_.mu * e.dev[k][i] +
+                            std::min(this->law_.K * e.volumetric[i], tensileStrength_);
+            }
+        }
     }
-    double elasticEnergyOf(const Eigen::Vector3d& eps) const
+    template <int N> Lane<N> elasticEnergyLanesOf(const DeviatorLanes<N>& e) const
     {
         const double K = this->law_.K;
-        const double ev = eps.sum();
         const double opening = tensileStrength_ / K; // εt
-        const double volumetric =
-            ev <= opening ? 0.5 * K * ev * ev : tensileStrength_ * (ev - 0.5 * opening);
-        const Eigen::Vector3d dev = eps - Eigen::Vector3d::Constant(ev / 3.0);
-        return this->law_.mu * dev.squaredNorm() + volumetric;
+        Lane<N> energy;
+        for (int i = 0; i < N; ++i)
+        {
+            const double ev = e.volumetric[i];
+            const double volumetric =
+                ev <= opening ? 0.5 * K * ev * ev : tensileStrength_ * (ev - 0.5 * opening);
+            energy[i] = this->law_.mu * e.squaredNorm(i) + volumetric;
+        }
+        return energy;
     }
     // The modulus of the wave-speed bound (plasticity.md (P2.7)) at the returned strains: where
     // the voids are open (εv > εt) the pressure does not change with εv, so only the shear
     // modulus acts, and not even that at the apex of a cohesionless cone, where every
     // admissible state is stress-free; elsewhere the elastic M = K + 4μ/3.
-    double waveModulusOf(const Eigen::Vector3d& eps) const
+    template <int N> Lane<N> waveModulusLanesOf(const DeviatorLanes<N>& e) const
     {
-        const double shear = 4.0 * this->law_.mu / 3.0;
-        if (!(eps.sum() > tensileStrength_ / this->law_.K))
+        const double open =
+            xi_ * cohesion_ - eta_ * tensileStrength_ > 0.0 ? 4.0 * this->law_.mu / 3.0 : 0.0;
+        const double opening = tensileStrength_ / this->law_.K;
+        Lane<N> modulus;
+        for (int i = 0; i < N; ++i)
         {
-            return this->law_.longitudinalModulus();
+            modulus[i] = e.volumetric[i] > opening ? open : this->law_.longitudinalModulus();
         }
-        return xi_ * cohesion_ - eta_ * tensileStrength_ > 0.0 ? shear : 0.0;
+        return modulus;
     }
     double extraEnergy(const Flow& flow) const { return flow.dissipation; }
     double dissipated(double V0, const Flow& flow) const { return V0 * flow.dissipation; }

@@ -82,6 +82,11 @@ struct DeviatorLanes
             norm[i] = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
         }
     }
+    // |e|² of point i.
+    double squaredNorm(int i) const
+    {
+        return dev[0][i] * dev[0][i] + dev[1][i] * dev[1][i] + dev[2][i] * dev[2][i];
+    }
 };
 
 } // namespace sph

@@ -41,6 +41,27 @@ inline void multiply(const A& a, const B& b, double (&out)[D][D])
     }
 }
 
+// out = Σₘ a(k, m) b(m, l) lane by lane, D×D, a and b returning lanes.
+template <int N, int D, class A, class B>
+inline void multiplyLanes(const A& a, const B& b, Lane<N> (&out)[D][D])
+{
+    for (int k = 0; k < D; ++k)
+    {
+        for (int l = 0; l < D; ++l)
+        {
+            for (int i = 0; i < N; ++i)
+            {
+                double sum = 0.0;
+                for (int m = 0; m < D; ++m)
+                {
+                    sum += a(k, m)[i] * b(m, l)[i];
+                }
+                out[k][l][i] = sum;
+            }
+        }
+    }
+}
+
 // Σₘ values[m] nₘ⊗nₘ of lane i, the directions nₘ the columns of `vectors`.
 template <int N, int D>
 inline void assemble(const Lane<N> (&vectors)[D][D], int i, const Eigen::Vector3d& values,
@@ -73,42 +94,41 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     // Gather: F, Cp⁻¹ (all D² components, as a packed state holds them), zz and α. Unused
     // lanes hold the virgin state at F = I, where every branch is finite.
     Lane<N> f[D][D], committed[State::packedSize];
-    for (int i = 0; i < N; ++i)
+    for (int k = 0; k < D; ++k)
     {
-        const bool used = static_cast<std::size_t>(i) < count;
-        const Mat<D> Fi = used ? F[i] : Mat<D>::Identity();
+        for (int l = 0; l < D; ++l)
+        {
+            f[k][l] = Lane<N>::Constant(k == l ? 1.0 : 0.0);
+        }
+    }
+    for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
+    {
+        const bool unit = c != alphaAt && (c == zz || (c < zz && c / D == c % D));
+        committed[c] = Lane<N>::Constant(unit ? 1.0 : 0.0);
+    }
+    for (std::size_t i = 0; i < count; ++i)
+    {
         for (int k = 0; k < D; ++k)
         {
             for (int l = 0; l < D; ++l)
             {
-                f[k][l][i] = Fi(k, l);
+                f[k][l][i] = F[i](k, l);
             }
         }
         for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
         {
-            const double virgin = c == alphaAt ? 0.0 : (c == zz || (c < zz && c / D == c % D)) ? 1.0 : 0.0;
-            committed[c][i] = used ? states[i * stride + c] : virgin;
+            committed[c][i] = states[i * stride + c];
         }
     }
     const Lane<N>& alpha = committed[alphaAt];
 
-    // be = (F Cp⁻¹) Fᵀ.
-    Lane<N> be[D][D];
-    for (int i = 0; i < N; ++i)
-    {
-        double t[D][D], product[D][D];
-        lanes::multiply<D>([&](int k, int m) { return f[k][m][i]; },
-                           [&](int m, int l) { return committed[m * D + l][i]; }, t);
-        lanes::multiply<D>([&](int k, int m) { return t[k][m]; },
-                           [&](int m, int l) { return f[l][m][i]; }, product);
-        for (int k = 0; k < D; ++k)
-        {
-            for (int l = 0; l < D; ++l)
-            {
-                be[k][l][i] = product[k][l];
-            }
-        }
-    }
+    // be = (F Cp⁻¹) Fᵀ. (Each loop over the lanes vectorises.)
+    Lane<N> t[D][D], be[D][D];
+    lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return f[k][m]; },
+                               [&](int m, int l) -> const Lane<N>& { return committed[m * D + l]; },
+                               t);
+    lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return t[k][m]; },
+                               [&](int m, int l) -> const Lane<N>& { return f[l][m]; }, be);
     PrincipalLanes<N, D> principal;
     principalOf<N>(be, committed[D == 2 ? zz : alphaAt], principal);
 
@@ -125,9 +145,9 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
 
     // F⁻¹ by cofactors (the transposed cofactor matrix over det F).
     Lane<N> finv[D][D];
-    for (int i = 0; i < N; ++i)
+    if constexpr (D == 2)
     {
-        if constexpr (D == 2)
+        for (int i = 0; i < N; ++i)
         {
             const double invDet = 1.0 / (f[0][0][i] * f[1][1][i] - f[0][1][i] * f[1][0][i]);
             finv[0][0][i] = f[1][1][i] * invDet;
@@ -135,25 +155,31 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
             finv[1][0][i] = -f[1][0][i] * invDet;
             finv[1][1][i] = f[0][0][i] * invDet;
         }
-        else
+    }
+    else
+    {
+        Lane<N> cof[3][3];
+        for (int k = 0; k < 3; ++k)
         {
-            double cof[3][3];
-            for (int k = 0; k < 3; ++k)
+            for (int l = 0; l < 3; ++l)
             {
-                for (int l = 0; l < 3; ++l)
+                const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+                const int l1 = (l + 1) % 3, l2 = (l + 2) % 3;
+                for (int i = 0; i < N; ++i)
                 {
-                    const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-                    const int l1 = (l + 1) % 3, l2 = (l + 2) % 3;
-                    cof[k][l] = f[k1][l1][i] * f[k2][l2][i] - f[k1][l2][i] * f[k2][l1][i];
+                    cof[k][l][i] = f[k1][l1][i] * f[k2][l2][i] - f[k1][l2][i] * f[k2][l1][i];
                 }
             }
-            const double invDet =
-                1.0 / (f[0][0][i] * cof[0][0] + f[0][1][i] * cof[0][1] + f[0][2][i] * cof[0][2]);
+        }
+        for (int i = 0; i < N; ++i)
+        {
+            const double invDet = 1.0 / (f[0][0][i] * cof[0][0][i] + f[0][1][i] * cof[0][1][i] +
+                                         f[0][2][i] * cof[0][2][i]);
             for (int k = 0; k < 3; ++k)
             {
                 for (int l = 0; l < 3; ++l)
                 {
-                    finv[k][l][i] = cof[l][k] * invDet;
+                    finv[k][l][i] = cof[l][k][i] * invDet;
                 }
             }
         }
@@ -161,23 +187,36 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
 
     // τ, P = S F⁻ᵀ with S = Σ τₖ nₖ⊗nₖ, W and the wave modulus M + max |τ| (P2.5).
     const auto& v = principal.vectors;
-    for (int i = 0; i < N; ++i)
+    const DeviatorLanes<N> returned(principal.strain);
+    Lane<N> tau[3], S[D][D];
+    kirchhoffLanes<N>(returned, tau);
+    for (int k = 0; k < D; ++k)
     {
-        const Eigen::Vector3d eps = principal.strain.point(i);
-        const Eigen::Vector3d tau = kirchhoff(eps);
-        double S[D][D], stress[D][D];
-        lanes::assemble<N, D>(v, i, tau, S);
-        lanes::multiply<D>([&](int k, int m) { return S[k][m]; },
-                           [&](int m, int l) { return finv[l][m][i]; }, stress);
-        for (int k = 0; k < D; ++k)
+        for (int l = 0; l < D; ++l)
         {
-            for (int l = 0; l < D; ++l)
+            for (int i = 0; i < N; ++i)
             {
-                out.P[k][l][i] = stress[k][l];
+                double sum = 0.0;
+                for (int m = 0; m < D; ++m)
+                {
+                    sum += tau[m][i] * v[k][m][i] * v[l][m][i];
+                }
+                S[k][l][i] = sum;
             }
         }
-        out.waveModulus[i] = waveModulusAt(eps) + tau.cwiseAbs().maxCoeff();
-        out.energy[i] = elasticEnergy(eps);
+    }
+    lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return S[k][m]; },
+                               [&](int m, int l) -> const Lane<N>& { return finv[l][m]; }, out.P);
+    const Lane<N> modulus = waveModulusLanes<N>(returned);
+    for (int i = 0; i < N; ++i)
+    {
+        out.waveModulus[i] =
+            modulus[i] +
+            std::max(std::max(std::abs(tau[0][i]), std::abs(tau[1][i])), std::abs(tau[2][i]));
+    }
+    out.energy = elasticEnergyLanes<N>(returned);
+    for (int i = 0; i < N; ++i)
+    {
         if (alpha[i] > 0.0 || out.flow.deltaGamma[i] > 0.0)
         {
             // Without plastic flow (now or before) the energy stays Hencky's.

@@ -15,9 +15,12 @@
 //   double extraEnergy(const Flow& flow) const;   W − Ψ(εe) when the point has flowed (now or
 //       before): the stored hardening energy plus the step's dissipation
 //   double dissipated(double V0, const Flow& flow) const;  what a commit books, V0 ΔD
-//   optional: Eigen::Vector3d kirchhoffOf(eps), double elasticEnergyOf(eps): an elastic law
-//       of the model's own in place of Hencky's (druckerPrager: no volumetric stress beyond
-//       its tensile strength, §P9)
+//   optional, over N points from their strains' volumetric and deviatoric parts (DeviatorLanes):
+//       template <int N> void kirchhoffLanesOf(e, Lane<N> (&tau)[3]) const,
+//       template <int N> Lane<N> elasticEnergyLanesOf(e) const and
+//       template <int N> Lane<N> waveModulusLanesOf(e) const: an elastic law of the model's
+//       own in place of Hencky's (druckerPrager: no volumetric stress beyond its tensile
+//       strength, §P9)
 //
 // Without plastic flow (now or before) the energy and the stress are `hencky`'s to round-off.
 
@@ -90,11 +93,21 @@ public:
     // zz component (plane strain: F_zz = 1 on both sides) and α are unchanged.
     void rebaseHistory(double* packed, const Mat<D>& from, const Mat<D>& to) const override
     {
-        State s = State::unpack(packed);
-        const Mat<D> M = to.inverse() * from;
-        const Mat<D> Cp = M * s.inversePlastic * M.transpose();
-        s.inversePlastic = 0.5 * (Cp + Cp.transpose());
-        s.pack(packed);
+        rebaseHistories(packed, State::packedSize, 1, &from, to);
+    }
+    // (to⁻¹ once for all of them: a particle's samples move to its one new frame.)
+    void rebaseHistories(double* states, std::size_t stride, std::size_t count, const Mat<D>* from,
+                         const Mat<D>& to) const override
+    {
+        const Mat<D> toInverse = to.inverse();
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            State s = State::unpack(states + j * stride);
+            const Mat<D> M = toInverse * from[j];
+            const Mat<D> Cp = M * s.inversePlastic * M.transpose();
+            s.inversePlastic = 0.5 * (Cp + Cp.transpose());
+            s.pack(states + j * stride);
+        }
     }
     std::vector<std::string> rebasedFields() const override
     {
@@ -116,40 +129,54 @@ protected:
 
 private:
     const Model& model() const { return static_cast<const Model&>(*this); }
-    // The elastic law on the principal log strains: the model's own, else Hencky's (P2.2).
-    Eigen::Vector3d kirchhoff(const Eigen::Vector3d& eps) const
+    // The elastic law at N points side by side, from the volumetric and deviatoric parts of
+    // their principal log strains: the model's own, else Hencky's (P2.2),
+    // τₖ = 2μ eₖ + K εv and Ψ = μ |e|² + ½ K εv².
+    template <int N> void kirchhoffLanes(const DeviatorLanes<N>& e, Lane<N> (&tau)[3]) const
     {
-        if constexpr (requires(const Model& m) { m.kirchhoffOf(eps); })
+        if constexpr (requires(const Model& m) { m.template kirchhoffLanesOf<N>(e, tau); })
         {
-            return model().kirchhoffOf(eps);
+            model().template kirchhoffLanesOf<N>(e, tau);
         }
         else
         {
-            return law_.kirchhoff(eps);
+            for (int k = 0; k < 3; ++k)
+            {
+                for (int i = 0; i < N; ++i)
+                {
+                    tau[k][i] = 2.0 * law_.mu * e.dev[k][i] + law_.K * e.volumetric[i];
+                }
+            }
         }
     }
-    double elasticEnergy(const Eigen::Vector3d& eps) const
+    template <int N> Lane<N> elasticEnergyLanes(const DeviatorLanes<N>& e) const
     {
-        if constexpr (requires(const Model& m) { m.elasticEnergyOf(eps); })
+        if constexpr (requires(const Model& m) { m.template elasticEnergyLanesOf<N>(e); })
         {
-            return model().elasticEnergyOf(eps);
+            return model().template elasticEnergyLanesOf<N>(e);
         }
         else
         {
-            return law_.energy(eps);
+            Lane<N> energy;
+            for (int i = 0; i < N; ++i)
+            {
+                const double ev = e.volumetric[i];
+                energy[i] = law_.mu * e.squaredNorm(i) + 0.5 * law_.K * ev * ev;
+            }
+            return energy;
         }
     }
     // The modulus M of (P2.5) at the returned strains: the model's own (a material that has
     // opened carries no stress, P2.7), else the elastic longitudinal modulus.
-    double waveModulusAt(const Eigen::Vector3d& eps) const
+    template <int N> Lane<N> waveModulusLanes(const DeviatorLanes<N>& e) const
     {
-        if constexpr (requires(const Model& m) { m.waveModulusOf(eps); })
+        if constexpr (requires(const Model& m) { m.template waveModulusLanesOf<N>(e); })
         {
-            return model().waveModulusOf(eps);
+            return model().template waveModulusLanesOf<N>(e);
         }
         else
         {
-            return law_.longitudinalModulus();
+            return Lane<N>::Constant(law_.longitudinalModulus());
         }
     }
     // (P2.5) with the stretch of `stretched` (F itself, or f = F Fr⁻¹ (P2.6)).

@@ -60,10 +60,9 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
             {
                 inverted[a] = smallest;
             }
-            for (std::size_t j = 0; j < list.count(a); ++j)
-            {
-                samples_.rebase(first + j, material, scratch.F[j], frame);
-            }
+            scratch.states.resize(list.count(a) * samples_.stride());
+            samples_.rebase(first, list.count(a), material, scratch.F.data(), frame,
+                            scratch.states.data());
             material.rebaseParticleHistory(a, kin.F, frame);
         }
     }

@@ -289,18 +289,25 @@ public:
             }
         }
     }
-    // The committed state in slot k re-expressed when the reference moves (§G4): its be at
-    // `to` is the one it had at `from` (after storeEveryState()).
-    void rebase(std::size_t k, const Material<D>& material, const Mat<D>& from, const Mat<D>& to)
+    // The committed states in slots first .. first + count re-expressed when the reference
+    // moves (§G4): the be of the sample in slot first + j at `to` is the one it had at
+    // from[j] (after storeEveryState()). buffer: count · stride() numbers.
+    void rebase(std::size_t first, std::size_t count, const Material<D>& material,
+                const Mat<D>* from, const Mat<D>& to, double* buffer)
     {
-        if (!isRecord(slot_[k]))
+        for (std::size_t j = 0; j < count; ++j)
         {
-            throw std::logic_error("SampleHistory: rebase() of a state without a record");
+            if (!isRecord(slot_[first + j]))
+            {
+                throw std::logic_error("SampleHistory: rebase() of a state without a record");
+            }
+            readSlot(first + j, buffer + j * stride_);
         }
-        std::array<double, maxStride> state{};
-        readSlot(k, state.data());
-        material.rebaseHistory(state.data(), from, to);
-        compact(state.data(), pool_.at(slot_[k]));
+        material.rebaseHistories(buffer, stride_, count, from, to);
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            compact(buffer + j * stride_, pool_.at(slot_[first + j]));
+        }
     }
 
     // Energy weights (weighted() only): of slot k; and the samples particle a lost at the last

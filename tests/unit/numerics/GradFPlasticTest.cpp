@@ -16,6 +16,7 @@
 #include "numerics/PlasticMotion.hpp"
 #include "stabilisation/gradF/GradF.hpp"
 
+#include <algorithm>
 #include <map>
 
 using namespace sph;
@@ -104,6 +105,25 @@ void rebaseKeepsTheElasticState(const char* materialText)
         CHECK((sampleKirchhoff<D>(*f.material, further * to, rebased) -
                sampleKirchhoff<D>(*f.material, further * from, state))
                   .norm() < 1e-10 * tauFrom.norm());
+    }
+    // A particle's samples rebased together (one to⁻¹ for all) are each rebased alone, bit for
+    // bit: a move's result does not depend on how its samples are grouped.
+    const std::size_t stride = state.size();
+    const Mat<D> from[3] = {affine<D>(0.15, 5), affine<D>(0.1, 7), affine<D>(0.05, 9)};
+    const Mat<D> to = affine<D>(0.2, 6);
+    std::vector<double> together;
+    for (int j = 0; j < 3; ++j)
+    {
+        together.insert(together.end(), state.begin(), state.end());
+    }
+    f.material->rebaseHistories(together.data(), stride, 3, from, to);
+    for (std::size_t j = 0; j < 3; ++j)
+    {
+        std::vector<double> alone = state;
+        f.material->rebaseHistory(alone.data(), from[j], to);
+        CHECK(std::equal(alone.begin(), alone.end(),
+                         together.begin() + static_cast<long>(j * stride)));
+        CHECK(!std::equal(alone.begin(), alone.end(), state.begin()));
     }
 }
 
