@@ -22,6 +22,12 @@
 //   largestDistance, atX  with a reference: the largest |y_top(x_r) − y_r| over the
 //              reference's points (y_top interpolated linearly between column centres) and
 //              where [m]
+//   meanDistance, rmsDistance  with a reference: the mean and the root mean square of
+//              y_top − y_ref(x) over the columns whose centres lie within the reference's x
+//              range (an empty column counts as the floor) [m]. The largest distance samples
+//              the surface only at the measured points, where one column-wide pit may or may
+//              not fall; the mean says whether the deposit is too low or too high as a whole,
+//              the rms how far its every column is (docs/results.md §5).
 // summary.json: the same values at the last row.
 #include "core/CaseFile.hpp"
 #include "core/Format.hpp"
@@ -37,6 +43,7 @@
 #include <cstdio>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace sph
 {
@@ -76,6 +83,8 @@ public:
             readReference(args.caseDir, params);
             columns.push_back("largestDistance");
             columns.push_back("atX");
+            columns.push_back("meanDistance");
+            columns.push_back("rmsDistance");
         }
         this->setColumns(columns);
     }
@@ -155,6 +164,9 @@ public:
             }
             row.push_back(largest);
             row.push_back(at);
+            const auto [mean, rms] = columnDistances(height);
+            row.push_back(mean);
+            row.push_back(rms);
         }
         last_ = row;
         char time[32];
@@ -199,6 +211,8 @@ public:
         {
             values["largestDistance"] = last_[3];
             values["atX"] = last_[4];
+            values["meanDistance"] = last_[5];
+            values["rmsDistance"] = last_[6];
         }
         return values;
     }
@@ -256,6 +270,37 @@ private:
             ++c;
         }
         return static_cast<double>(c) * width_;
+    }
+
+    // The mean and rms of height − reference over the columns whose centres lie within the
+    // reference's x range (the columns beyond the deposit at the floor's 0).
+    std::pair<double, double> columnDistances(const std::vector<double>& height) const
+    {
+        double sum = 0.0;
+        double squares = 0.0;
+        std::size_t count = 0;
+        for (std::size_t c = 0;; ++c)
+        {
+            const double x = (static_cast<double>(c) + 0.5) * width_;
+            if (x > reference_.back().first)
+            {
+                break;
+            }
+            if (x < reference_.front().first)
+            {
+                continue;
+            }
+            const double d = (c < height.size() ? height[c] : 0.0) - referenceAt(x);
+            sum += d;
+            squares += d * d;
+            ++count;
+        }
+        if (count == 0)
+        {
+            return {0.0, 0.0};
+        }
+        const double n = static_cast<double>(count);
+        return {sum / n, std::sqrt(squares / n)};
     }
 
     // The surface at x, linear between column centres (0 beyond the last column).

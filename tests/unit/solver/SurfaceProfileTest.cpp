@@ -1,6 +1,7 @@
 // The `surfaceProfile` function object (functionObjects/surfaceProfile): the free surface of a
 // block at rest column by column (highest centre + half a spacing), its front and top, the
-// largest vertical distance to a reference profile computed by hand, the profile tables, and
+// largest vertical distance to a reference profile and the mean and rms over the columns,
+// computed by hand, the profile tables, and
 // clean errors for a missing or garbled reference file.
 #include "solver/SolverCases.hpp"
 
@@ -46,6 +47,12 @@ TEST_CASE("surfaceProfile: front, top and the largest distance to a reference, b
     CHECK(test::summaryValue(caseDir, "functions/surface/largestDistance") ==
           Approx(0.01).epsilon(1e-6));
     CHECK(test::summaryValue(caseDir, "functions/surface/atX") == 0.0);
+    // Over the four columns (the reference at 5, 15, 25, 35 mm: 0.02625, 0.01875, 0.01375,
+    // 0.01125): height − reference = −0.00625, 0.00125, 0.00625, 0.00875.
+    CHECK(test::summaryValue(caseDir, "functions/surface/meanDistance") ==
+          Approx(0.0025).epsilon(1e-6));
+    CHECK(test::summaryValue(caseDir, "functions/surface/rmsDistance") ==
+          Approx(0.00625).epsilon(1e-6));
     CHECK(test::summaryValue(caseDir, "functions/surface/depositEnd") ==
           Approx(0.04).epsilon(1e-9));
     CHECK_THAT(output, Catch::Contains("surface: front 0.04 m, top 0.02 m, deposit end 0.04 m, "
