@@ -56,7 +56,8 @@ public:
         return "2D, or a slice zMin <= z <= zMax of a 3D slab: the free surface y_top(x) of the "
                "chosen bodies at intervals, its front "
                "(run-out: the farthest particle), the end of the continuous deposit, its top, "
-               "and the largest vertical distance to a measured profile.";
+               "and against a measured profile the largest vertical distance at its points "
+               "and the mean and rms of the error over the columns.";
     }
     static Schema schema()
     {
