@@ -26,6 +26,7 @@
 
 #include "materials/LogarithmicElasticity.hpp"
 #include "materials/plasticity/PlasticHistory.hpp"
+#include "materials/plasticity/LanesResult.hpp"
 #include "materials/plasticity/ReturnLanes.hpp"
 #include "materials/plasticity/ReturnMemo.hpp"
 
@@ -187,44 +188,7 @@ private:
     // `count` ≤ N points with their packed committed states (stride apart); the lanes beyond
     // `count` are computed on the virgin state at F = I and ignored.
     template <int N>
-    struct LanesResult
-    {
-        Lane<N> P[D][D];
-        Lane<N> energy;
-        FlowLanes<N> flow;
-        Lane<N> waveModulus;
-        Lane<N> next[State::packedSize]; // (wantNext) the committed state where it does not flow
-
-        Mat<D> stressAt(int i) const
-        {
-            Mat<D> result;
-            for (int k = 0; k < D; ++k)
-            {
-                for (int l = 0; l < D; ++l)
-                {
-                    result(k, l) = P[k][l][i];
-                }
-            }
-            return result;
-        }
-        Flow flowAt(int i) const { return {flow.deltaGamma[i], flow.alpha[i], flow.dissipation[i]}; }
-        void packNext(int i, double* out) const
-        {
-            for (std::size_t c = 0; c < State::packedSize; ++c)
-            {
-                out[c] = next[c][i];
-            }
-        }
-        // The state a memo entry holds: next, with the flow's α.
-        State nextAt(int i) const
-        {
-            double packed[State::packedSize];
-            packNext(i, packed);
-            State s = State::unpack(packed);
-            s.alpha = flow.alpha[i];
-            return s;
-        }
-    };
+    using LanesResult = sph::LanesResult<D, N>;
     template <int N>
     void returnInLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count,
                        bool flow, bool wantNext, LanesResult<N>& out) const;

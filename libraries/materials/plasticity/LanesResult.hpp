@@ -1,0 +1,55 @@
+#pragma once
+// What ReturnMapPlasticity's return map gives back at N points side by side
+// (ReturnMapLanes.hpp): the stresses, energies, flows and wave moduli lane by lane, and the
+// states a commit would write.
+
+#include "materials/plasticity/PlasticHistory.hpp"
+#include "materials/plasticity/ReturnLanes.hpp"
+
+namespace sph
+{
+
+template <int D, int N> struct LanesResult
+{
+    Lane<N> P[D][D];
+    Lane<N> energy;
+    FlowLanes<N> flow;
+    Lane<N> waveModulus;
+    Lane<N>
+        next[PlasticState<D>::packedSize]; // (wantNext) the committed state where it does not flow
+
+    Mat<D> stressAt(int i) const
+    {
+        Mat<D> result;
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                result(k, l) = P[k][l][i];
+            }
+        }
+        return result;
+    }
+    PlasticFlow flowAt(int i) const
+    {
+        return {flow.deltaGamma[i], flow.alpha[i], flow.dissipation[i]};
+    }
+    void packNext(int i, double* out) const
+    {
+        for (std::size_t c = 0; c < PlasticState<D>::packedSize; ++c)
+        {
+            out[c] = next[c][i];
+        }
+    }
+    // The state a memo entry holds: next, with the flow's α.
+    PlasticState<D> nextAt(int i) const
+    {
+        double packed[PlasticState<D>::packedSize];
+        packNext(i, packed);
+        PlasticState<D> s = PlasticState<D>::unpack(packed);
+        s.alpha = flow.alpha[i];
+        return s;
+    }
+};
+
+} // namespace sph
