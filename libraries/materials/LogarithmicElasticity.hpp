@@ -89,6 +89,15 @@ struct HenckyLaw
 
     double longitudinalModulus() const { return K + 4.0 * mu / 3.0; }
 
+    // One principal value: τₖ = 2μ eₖ + K εv from the deviator eₖ = εₖ − εv/3 and εv; and the
+    // energy μ |e|² + ½ K εv² from |e|² and εv (the plastic models' lanes use them point by
+    // point, ReturnMapPlasticity).
+    double kirchhoffOf(double dev, double ev) const { return 2.0 * mu * dev + K * ev; }
+    double energyOf(double devSquared, double ev) const
+    {
+        return mu * devSquared + 0.5 * K * ev * ev;
+    }
+
     Eigen::Vector3d kirchhoff(const Eigen::Vector3d& eps) const
     {
         const double ev = eps.sum();

@@ -145,7 +145,7 @@ private:
             {
                 for (int i = 0; i < N; ++i)
                 {
-                    tau[k][i] = 2.0 * law_.mu * e.dev[k][i] + law_.K * e.volumetric[i];
+                    tau[k][i] = law_.kirchhoffOf(e.dev[k][i], e.volumetric[i]);
                 }
             }
         }
@@ -161,8 +161,7 @@ private:
             Lane<N> energy;
             for (int i = 0; i < N; ++i)
             {
-                const double ev = e.volumetric[i];
-                energy[i] = law_.mu * e.squaredNorm(i) + 0.5 * law_.K * ev * ev;
+                energy[i] = law_.energyOf(e.squaredNorm(i), e.volumetric[i]);
             }
             return energy;
         }
