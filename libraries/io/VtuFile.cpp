@@ -6,6 +6,7 @@
 #include "io/AtomicFile.hpp"
 #include "io/VtuArrayLengths.hpp"
 #include "io/VtuChecks.hpp"
+#include "io/VtuStreamedArray.hpp"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
@@ -96,7 +97,13 @@ vtkSmartPointer<vtkDataArray> makeArray(const std::string& name, const VtuArray&
                                         std::size_t tuples)
 {
     vtkSmartPointer<vtkDataArray> result;
-    if (array.single)
+    if (array.streamed)
+    {
+        auto streamed = vtkSmartPointer<VtuStreamedArray>::New();
+        streamed->setSource(array.streamed, array.components);
+        result = streamed;
+    }
+    else if (array.single)
     {
         result = wrap<vtkFloatArray>(array.singles, array.components);
     }
@@ -310,6 +317,21 @@ void writeGrid(const std::filesystem::path& file,
 }
 
 } // namespace
+
+void materialise(VtuArray& array)
+{
+    if (!array.streamed)
+    {
+        return;
+    }
+    const VtuStreamedValues& source = *array.streamed;
+    array.values.resize(source.size());
+    for (std::size_t item = 0; item + 1 < source.offsets.size(); ++item)
+    {
+        source.get(item, array.values.data() + source.offsets[item]);
+    }
+    array.streamed.reset();
+}
 
 void writeVtu(const std::filesystem::path& file, const VtuData& data)
 {

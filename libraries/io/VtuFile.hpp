@@ -10,11 +10,24 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace sph
 {
+
+// Values that are not held in memory but copied out, item by item, when the writer reaches them:
+// item i holds offsets[i + 1] - offsets[i] values (offsets[0] = 0), which get(i, out) copies to
+// out. A ragged particle field's entries (an item per particle, gradF's samples the largest data
+// of a plastic run) are written so, and cost the output no copy of them.
+struct VtuStreamedValues
+{
+    std::vector<std::size_t> offsets;
+    std::function<void(std::size_t item, double* out)> get;
+
+    std::size_t size() const { return offsets.empty() ? 0 : offsets.back(); }
+};
 
 struct VtuArray
 {
@@ -26,7 +39,13 @@ struct VtuArray
     std::vector<float> singles; // the values of a `single` array
     bool readFromSingles = false; // (read back) the file stores it as Float32
     bool single = false;          // written as Float32, from `singles`
+    // (field data only) written from these instead of `values`, which stays empty; they read
+    // their source when the file is written, so it must not change before.
+    std::shared_ptr<const VtuStreamedValues> streamed = nullptr;
 };
+
+// The values of `array` in memory (a streamed array's copied into `values`; others unchanged).
+void materialise(VtuArray& array);
 
 // A field-data array X whose tuples belong to the points, a variable number each (a ragged
 // particle field, particles/RaggedArray.hpp): the point array X + raggedCountSuffix says how

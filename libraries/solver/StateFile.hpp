@@ -36,7 +36,8 @@ inline constexpr const char* positionField = "position";
 
 // Everything but the points: the field data (time, run scalars and arrays, the ragged
 // fields' entries of the written particles: every particle, or those of `selection`) and the
-// active arrays.
+// active arrays. The ragged fields' entries are streamed (VtuStreamedValues): they read
+// `fields` and `selection` when the file is written, so write it before either changes.
 template <int D>
 void writeStateHeader(const ParticleFields<D>& fields, const RunScalars& scalars, double time,
                       VtuData& header, const std::vector<std::size_t>* selection = nullptr);
@@ -48,7 +49,7 @@ template <int D>
 void writeStatePoints(const ParticleFields<D>& fields, const std::vector<std::size_t>* selection,
                       std::size_t begin, std::size_t end, VtuData& piece);
 
-// Both, for every particle, into one data set.
+// Both, for every particle, into one data set that holds every value (nothing streamed).
 template <int D>
 void writeState(const ParticleFields<D>& fields, const RunScalars& scalars, double time,
                 VtuData& data);

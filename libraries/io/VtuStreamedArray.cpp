@@ -1,0 +1,82 @@
+#include "io/VtuStreamedArray.hpp"
+
+#include <vtkObjectFactory.h>
+
+#include <algorithm>
+#include <atomic>
+#include <stdexcept>
+
+namespace sph
+{
+
+vtkStandardNewMacro(VtuStreamedArray);
+
+namespace
+{
+
+// The item a thread copied out last, of the array with this serial number.
+struct ItemCache
+{
+    std::uint64_t serial = 0; // 0: none
+    std::size_t item = 0;
+    std::vector<double> values;
+};
+thread_local ItemCache cache;
+std::atomic<std::uint64_t> lastSerial{0};
+
+} // namespace
+
+void VtuStreamedArray::setSource(std::shared_ptr<const VtuStreamedValues> source, int components)
+{
+    if (!source || components < 1 || source->size() % static_cast<std::size_t>(components) != 0 ||
+        source->offsets.empty() || source->offsets.front() != 0)
+    {
+        throw std::logic_error("VtuStreamedArray: a source that is not whole tuples");
+    }
+    source_ = std::move(source);
+    serial_ = ++lastSerial;
+    SetNumberOfComponents(components);
+    SetNumberOfTuples(static_cast<vtkIdType>(source_->size() / static_cast<std::size_t>(components)));
+}
+
+double VtuStreamedArray::GetValue(vtkIdType valueIdx) const
+{
+    const auto value = static_cast<std::size_t>(valueIdx);
+    const std::vector<std::size_t>& offsets = source_->offsets;
+    if (value >= source_->size())
+    {
+        throw std::out_of_range("VtuStreamedArray: value " + std::to_string(value) + " of " +
+                                std::to_string(source_->size()));
+    }
+    if (cache.serial != serial_ || value < offsets[cache.item] || value >= offsets[cache.item + 1])
+    {
+        // The item that holds it: the last whose first value is not beyond it (items without
+        // values share their offset with the next, which upper_bound skips).
+        cache.item = static_cast<std::size_t>(
+                         std::upper_bound(offsets.begin(), offsets.end(), value) - offsets.begin()) - 1;
+        cache.values.resize(offsets[cache.item + 1] - offsets[cache.item]);
+        source_->get(cache.item, cache.values.data());
+        cache.serial = serial_;
+    }
+    return cache.values[value - offsets[cache.item]];
+}
+
+void VtuStreamedArray::GetTypedTuple(vtkIdType tupleIdx, double* tuple) const
+{
+    for (int c = 0; c < NumberOfComponents; ++c)
+    {
+        tuple[c] = GetTypedComponent(tupleIdx, c);
+    }
+}
+
+double VtuStreamedArray::GetTypedComponent(vtkIdType tupleIdx, int compIdx) const
+{
+    return GetValue(tupleIdx * NumberOfComponents + compIdx);
+}
+
+void VtuStreamedArray::readOnly() const
+{
+    throw std::logic_error("VtuStreamedArray: written into (it streams its source, read-only)");
+}
+
+} // namespace sph
