@@ -263,6 +263,18 @@ sph_add_solver_run("geomaterial column collapse bit-identical on 2 ranks" 2
                    -set functions.surface.writeInterval=0.01 -set functions.particles.writeInterval=0.01)
 set_property(TEST "parallel:sphSolid geomaterial column collapse bit-identical on 2 ranks"
              APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy walls")
+# The same with issue 29's updated-Lagrangian variant: samples that carry their elastic state,
+# the close-pair energy, and the moves' energy weights chosen per pair (docs/theory/
+# gradF-plastic.md §G9, §G15), through the opening of the front (0.04 s).
+sph_add_solver_run("geomaterial column collapse UL gradF conserving bit-identical on 2 ranks" 2
+                   ${CMAKE_SOURCE_DIR}/tutorials/geomaterials/columnCollapse bitIdentical -threads 1
+                   -set endTime=0.04 -set writeInterval=0.02
+                   -set functions.surface.writeInterval=0.02 -set functions.particles.writeInterval=0.02
+                   -set formulation.type=updatedLagrangian -set stabilisation.plasticSamples=elasticState
+                   -set stabilisation.moveWeights=conserving
+                   -set "sphSchemes.impenetrability={ distance 0.5$<SEMICOLON> }")
+set_property(TEST "parallel:sphSolid geomaterial column collapse UL gradF conserving bit-identical on 2 ranks"
+             APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy walls")
 # The collapse as a 3D slab between frictionless side walls (tutorials/geomaterials/
 # columnCollapse3D: five walls, the geostatic start in 3D, TL gradF's per-sample history, the
 # mid-plane surface profile), 2 000 particles, on 2 ranks (issue 33).
