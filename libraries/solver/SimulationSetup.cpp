@@ -208,11 +208,17 @@ void Simulation<D>::setupImpenetrability(const SchemeSettings& schemes)
         Schema()
             .add(Key::real("distance", "pairs closer than this many initial spacings store "
                                        "energy; 0.5 by the sweeps on the collapse and the "
-                                       "metal impact (docs/theory/impenetrability.md §I4)")
-                     .range(0.0, 1.0, false, true)
+                                       "metal impact (docs/theory/impenetrability.md §I4); 0: "
+                                       "none does (off, as without the key)")
+                     .range(0.0, 1.0)
                      .defaultValue("0.5"))
             .validate(*schemes.impenetrability, "impenetrability", D);
-    impenetrability_ = std::make_unique<Impenetrability<D>>(p.real("distance"), materials_);
+    // δ = 0: no pair is ever closer, Π_I = 0; no model, so the run is the one without the key
+    // (a case that names it can be switched off from the command line or a study level).
+    if (p.real("distance") > 0.0)
+    {
+        impenetrability_ = std::make_unique<Impenetrability<D>>(p.real("distance"), materials_);
+    }
 }
 
 // 1D: each body's particles in the order of X along the bar, which they must keep (a

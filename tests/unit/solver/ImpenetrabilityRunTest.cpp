@@ -34,3 +34,18 @@ TEST_CASE("impenetrability leaves a run without close pairs unchanged, bit for b
     REQUIRE(c.points.size() == a.points.size());
     CHECK(c.points != a.points);
 }
+
+TEST_CASE("impenetrability with distance 0 is off: the run without the key, bit for bit",
+          "[impenetrability]")
+{
+    // What a case that names the energy uses to switch it off (a study level, the command line):
+    // with a whole spacing the same rings differ (above), with 0 they are the run without it.
+    test::TempDir whole;
+    test::TempDir off;
+    test::TempDir without;
+    const VtuData a = runRings(whole.path(), {"-set", "sphSchemes.impenetrability={ distance 1; }"});
+    const VtuData b = runRings(off.path(), {"-set", "sphSchemes.impenetrability={ distance 0; }"});
+    const VtuData c = runRings(without.path(), {});
+    test::requireIdenticalState(b, c);
+    CHECK(a.points != b.points);
+}
