@@ -255,25 +255,23 @@ sph_add_solver_run("Taylor bar UL gradF per-sample history bit-identical on 2 ra
                    -set endTime=4e-6 -set writeInterval=2e-6 -set functions={}
                    -set formulation.type=updatedLagrangian -set stabilisation.type=gradF)
 # A geomaterial: the column collapse tutorial as it is (druckerPrager sand under gravity
-# between walls, gradF's per-sample history, every function object of the tutorial: surface
-# profiles, snapshots of plasticStrain), on 2 ranks.
+# between walls; issue 29's UL gradF: samples that carry their elastic state, the moves' energy
+# weights chosen per pair, the close-pair energy; every function object of the tutorial: surface
+# profiles, snapshots of plasticStrain), on 2 ranks, through the opening of the front (0.04 s).
 sph_add_solver_run("geomaterial column collapse bit-identical on 2 ranks" 2
                    ${CMAKE_SOURCE_DIR}/tutorials/geomaterials/columnCollapse bitIdentical -threads 1
-                   -set endTime=0.02 -set writeInterval=0.01
-                   -set functions.surface.writeInterval=0.01 -set functions.particles.writeInterval=0.01)
+                   -set endTime=0.04 -set writeInterval=0.02
+                   -set functions.surface.writeInterval=0.02 -set functions.particles.writeInterval=0.02)
 set_property(TEST "parallel:sphSolid geomaterial column collapse bit-identical on 2 ranks"
              APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy walls")
-# The same with issue 29's updated-Lagrangian variant: samples that carry their elastic state,
-# the close-pair energy, and the moves' energy weights chosen per pair (docs/theory/
-# gradF-plastic.md §G9, §G15), through the opening of the front (0.04 s).
-sph_add_solver_run("geomaterial column collapse UL gradF conserving bit-identical on 2 ranks" 2
+# The same with total-Lagrangian gradF (per-sample history since t = 0).
+sph_add_solver_run("geomaterial column collapse TL gradF bit-identical on 2 ranks" 2
                    ${CMAKE_SOURCE_DIR}/tutorials/geomaterials/columnCollapse bitIdentical -threads 1
-                   -set endTime=0.04 -set writeInterval=0.02
-                   -set functions.surface.writeInterval=0.02 -set functions.particles.writeInterval=0.02
-                   -set formulation.type=updatedLagrangian -set stabilisation.plasticSamples=elasticState
-                   -set stabilisation.moveWeights=conserving
-                   -set "sphSchemes.impenetrability={ distance 0.5$<SEMICOLON> }")
-set_property(TEST "parallel:sphSolid geomaterial column collapse UL gradF conserving bit-identical on 2 ranks"
+                   -set endTime=0.02 -set writeInterval=0.01
+                   -set functions.surface.writeInterval=0.01 -set functions.particles.writeInterval=0.01
+                   -set formulation.type=totalLagrangian -set "stabilisation={ type gradF$<SEMICOLON> }"
+                   -set "impenetrability={ distance 0$<SEMICOLON> }")
+set_property(TEST "parallel:sphSolid geomaterial column collapse TL gradF bit-identical on 2 ranks"
              APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy walls")
 # The collapse as a 3D slab between frictionless side walls (tutorials/geomaterials/
 # columnCollapse3D: five walls, the geostatic start in 3D, TL gradF's per-sample history, the
