@@ -318,21 +318,6 @@ void writeGrid(const std::filesystem::path& file,
 
 } // namespace
 
-void materialise(VtuArray& array)
-{
-    if (!array.streamed)
-    {
-        return;
-    }
-    const VtuStreamedValues& source = *array.streamed;
-    array.values.resize(source.size());
-    for (std::size_t item = 0; item + 1 < source.offsets.size(); ++item)
-    {
-        source.get(item, array.values.data() + source.offsets[item]);
-    }
-    array.streamed.reset();
-}
-
 void writeVtu(const std::filesystem::path& file, const VtuData& data)
 {
     const vtkSmartPointer<vtkUnstructuredGrid> grid = makeGrid(data, data);

@@ -74,6 +74,21 @@ double VtuStreamedArray::GetTypedComponent(vtkIdType tupleIdx, int compIdx) cons
     return GetValue(tupleIdx * NumberOfComponents + compIdx);
 }
 
+void materialise(VtuArray& array)
+{
+    if (!array.streamed)
+    {
+        return;
+    }
+    const VtuStreamedValues& source = *array.streamed;
+    array.values.resize(source.size());
+    for (std::size_t item = 0; item + 1 < source.offsets.size(); ++item)
+    {
+        source.get(item, array.values.data() + source.offsets[item]);
+    }
+    array.streamed.reset();
+}
+
 void VtuStreamedArray::readOnly() const
 {
     throw std::logic_error("VtuStreamedArray: written into (it streams its source, read-only)");
