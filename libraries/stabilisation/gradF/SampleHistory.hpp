@@ -203,6 +203,10 @@ public:
             neighbours_[k] = global(list.indices[k]);
         }
         storeNewStates(list, body, materials, hasNew, Fr);
+        if (pool_.allocatedSinceOrdered() * relocateAfter > pool_.held())
+        {
+            relocateInSlotOrder();
+        }
         clearPending();
         current_ = true;
     }
@@ -389,6 +393,9 @@ public:
 
 private:
     static constexpr std::size_t maxStride = 16;
+    // follow() relocates the records once more than 1/relocateAfter of them were handed out
+    // since they were last in order (the cost of a relocation is one pass over the records).
+    static constexpr std::size_t relocateAfter = 8;
     // Slot markers of follow() (above any record StatePool hands out): a kept pair's old slot;
     // a new pair that starts from its neighbour's state, or from its owner's.
     static constexpr StatePool::Index moved = StatePool::none - 1;
@@ -421,6 +428,27 @@ private:
             throw std::runtime_error("sampleHistory: a state the material cannot keep exactly "
                                      "(its Cp^-1 is not symmetric: not written by sphSolid)");
         }
+    }
+
+    // The records laid out in the order of the slots that name them, so that an evaluation
+    // (which reads them particle by particle) streams through the pool. Only where they are
+    // stored changes: every state, and so every result, is the same.
+    void relocateInSlotOrder()
+    {
+        // (follow()'s buffer, free again here, holds the destinations: no allocation.)
+        std::vector<StatePool::Index>& destination = remapped_;
+        resizePairArray(destination, pool_.extent());
+        std::fill(destination.begin(), destination.end(), StatePool::none);
+        StatePool::Index next = 0;
+        for (StatePool::Index& record : slot_)
+        {
+            if (isRecord(record))
+            {
+                destination[record] = next;
+                record = next++;
+            }
+        }
+        pool_.relocate(destination);
     }
 
     // follow()'s new pairs that start from a state of their own, in slot order.

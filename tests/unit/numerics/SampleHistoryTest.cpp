@@ -8,11 +8,13 @@
 //   - the restart field (get/assign) round-trips bit for bit, in the full packed layout;
 //   - a plastic state's compact form (Cp⁻¹'s upper triangle) unpacks bit for bit, and a state
 //     whose Cp⁻¹ is not symmetric bit for bit is refused, not rounded;
-//   - StatePool's records keep their address and contents as it grows, released ones are reused.
+//   - StatePool's records keep their address and contents as it grows, released ones are reused,
+//     and relocate() puts them in a given order in place (follow() does, once they scatter).
 #include "materials/plasticity/PlasticHistory.hpp"
 #include "numerics/NumericsSupport.hpp"
 #include "stabilisation/gradF/SampleHistory.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <map>
 #include <random>
@@ -403,4 +405,59 @@ TEST_CASE("StatePool: records keep address and contents as it grows, released on
     pool.reset(3);
     CHECK(pool.held() == 0);
     CHECK(pool.allocate() == 0);
+}
+
+TEST_CASE("StatePool: relocate() moves the held records to their destinations, in place",
+          "[samples][memory]")
+{
+    StatePool pool;
+    pool.reset(2);
+    const std::size_t count = 9000; // more than two blocks
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        double* r = pool.at(pool.allocate());
+        r[0] = static_cast<double>(i);
+        r[1] = -static_cast<double>(i);
+    }
+    // Every third record released; the others go to a random order of 0 .. held − 1.
+    std::vector<StatePool::Index> destination(count, StatePool::none);
+    std::vector<StatePool::Index> order;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        if (i % 3 == 1)
+        {
+            pool.release(static_cast<StatePool::Index>(i));
+        }
+        else
+        {
+            order.push_back(static_cast<StatePool::Index>(order.size()));
+        }
+    }
+    std::shuffle(order.begin(), order.end(), std::mt19937(3));
+    std::vector<double> expected(2 * order.size());
+    for (std::size_t i = 0, next = 0; i < count; ++i)
+    {
+        if (i % 3 != 1)
+        {
+            destination[i] = order[next++];
+            expected[2 * destination[i]] = static_cast<double>(i);
+            expected[2 * destination[i] + 1] = -static_cast<double>(i);
+        }
+    }
+    const std::size_t held = pool.held();
+    CHECK(pool.allocatedSinceOrdered() == count);
+    pool.relocate(destination);
+    CHECK(pool.held() == held);
+    CHECK(pool.extent() == held);
+    CHECK(pool.allocatedSinceOrdered() == 0);
+    for (std::size_t k = 0; k < held; ++k)
+    {
+        const double* r = pool.at(static_cast<StatePool::Index>(k));
+        REQUIRE((r[0] == expected[2 * k] && r[1] == expected[2 * k + 1]));
+    }
+    // Nothing is free after it: the next record is a new one, after the held ones.
+    CHECK(pool.allocate() == held);
+    // A destination list of the wrong length is refused.
+    std::vector<StatePool::Index> wrong(3, StatePool::none);
+    CHECK_THROWS_AS(pool.relocate(wrong), std::logic_error);
 }
