@@ -67,15 +67,24 @@ void Simulation<D>::setupOperatorProbe()
 }
 
 // Power iterations on the forces at perturbed positions about x^n, whose force T(x^n) is in
-// acceleration_ (before accelerate()); then the level's own evaluation once more, so that F, P,
-// the forces and every scheme's and material's scratch state are the level's again, bit for
-// bit (each evaluation is a function of the positions and the committed state only).
+// acceleration_ (before accelerate()); then the level's F, P and forces are put back, with what
+// the scheme set aside for the commit. A scheme that cannot set its evaluation aside gets the
+// level's own evaluation once more instead, so that its scratch state is the level's again,
+// bit for bit (each evaluation is a function of the positions and the committed state only).
 template <int D>
 typename OperatorProbe<D>::Result Simulation<D>::probeOperator(int iterations,
                                                                std::vector<Vec<D>>& mode)
 {
     const std::vector<Vec<D>> x = particles_.x;
     const std::vector<Vec<D>> T = acceleration_;
+    const bool setAside = scheme_->setAsideEvaluation();
+    std::vector<Mat<D>> levelF;
+    std::vector<Mat<D>> levelP;
+    if (setAside)
+    {
+        levelF = particles_.F; // with the ghosts' (refreshed by the level's evaluation)
+        levelP = particles_.P;
+    }
     const auto forcesAt = [this](const std::vector<Vec<D>>& perturbed, std::vector<Vec<D>>& forces) {
         particles_.x = perturbed;
         computeForces(false, false);
@@ -85,7 +94,17 @@ typename OperatorProbe<D>::Result Simulation<D>::probeOperator(int iterations,
         {x, T, particles_.m, particles_.fixed, kernel_->h(), step_, ranks_}, forcesAt, iterations,
         mode);
     particles_.x = x;
-    computeForces(levelAtReference_, levelWantsEnergy_);
+    if (setAside)
+    {
+        particles_.F.swap(levelF);
+        particles_.P.swap(levelP);
+        acceleration_ = T;
+        scheme_->restoreEvaluation();
+    }
+    else
+    {
+        computeForces(levelAtReference_, levelWantsEnergy_);
+    }
     return result;
 }
 

@@ -238,6 +238,14 @@ public:
     // Π at the current positions (the energy the force derives from).
     virtual double energy(const ForceInput<D>& in) = 0;
 
+    // The operator probe (docs/theory/timeStep.md §T3) evaluates the forces at perturbed
+    // positions between a level's evaluation and its commit. A scheme whose evaluation leaves
+    // for the commit nothing but F, P and the forces (which the solver keeps) and what it can
+    // set aside here returns true, and gets it back from restoreEvaluation() after the probe;
+    // otherwise (false, the default) the solver evaluates the level once more.
+    virtual bool setAsideEvaluation() { return false; }
+    virtual void restoreEvaluation() {}
+
     // Materials with history (docs/theory/plasticity.md §P7). A scheme that keeps history of
     // its own declares it here as particle fields (called once, when some material has
     // history), so that it is restart data and moves with its particles between ranks...

@@ -79,6 +79,20 @@ public:
                      const std::vector<int>& body,
                      const std::vector<Material<D>*>& materials) override;
     double commitHistory(const HistoryCommit<D>& in) override;
+    // What the commit reads of an evaluation besides F and P: the samples' pending states and
+    // their dissipation (the materials' own return memo is found again or recomputed, to the
+    // same digits).
+    bool setAsideEvaluation() override
+    {
+        samples_.setAsidePending();
+        dissipationAside_.swap(sampleDissipation_);
+        return true;
+    }
+    void restoreEvaluation() override
+    {
+        samples_.restorePending();
+        dissipationAside_.swap(sampleDissipation_);
+    }
     bool movesParticleHistory() const override { return elasticState_; }
     std::string nextToTry(bool updated, bool plastic) const override
     {
@@ -186,6 +200,7 @@ private:
     ForceStatus sampleInversion_;
     SampleHistory<D> samples_;
     std::vector<double> sampleDissipation_;
+    std::vector<double> dissipationAside_; // setAsideEvaluation()
     // Where the samples around particle a find their history: their states read into
     // scratch (and, with pending, where the evaluation puts the states to commit).
     HistoryOf historyAround(std::size_t a, const Material<D>& material,

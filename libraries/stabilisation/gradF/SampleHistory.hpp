@@ -254,6 +254,14 @@ public:
             p.states.clear();
         }
     }
+    // The last evaluation's pending states set aside while other evaluations come (the
+    // operator probe's), and put back for the commit.
+    void setAsidePending() { pending_.swap(aside_); }
+    void restorePending()
+    {
+        pending_.swap(aside_);
+        aside_.clear(); // the probe's states: no memory held until the next probe
+    }
     // The states of the last evaluation become the committed ones, in place.
     void commit()
     {
@@ -536,6 +544,7 @@ private:
     bool current_ = false;
     StatePool pool_;
     std::vector<Pending> pending_;
+    std::vector<Pending> aside_; // setAsidePending()
     // The samples of particle a are slots offsets_[a] .. offsets_[a + 1]: a itself first, then
     // its neighbours, by global index. Slot k's record, or none (the initial state).
     std::vector<std::size_t> offsets_;

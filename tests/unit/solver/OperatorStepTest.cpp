@@ -1,7 +1,8 @@
 // The time step from the operator's measured largest frequency (docs/theory/timeStep.md): the
 // measured frequency is the leapfrog's stability limit (T1.1) to a per cent; a probe that only
 // reports leaves a run as it was, bit for bit (§T3: each evaluation is a function of the
-// positions and the committed state); `stepBound operator` starts with the wave-speed step and
+// positions and the committed state, and what gradF sets aside around the probe is all its
+// commit reads); `stepBound operator` starts with the wave-speed step and
 // keeps the plastic impact stable at a Courant number where the wave-speed step lets it fail
 // (§T2, §T4).
 #include "core/Application.hpp"
@@ -24,6 +25,28 @@ int runImpact(const std::filesystem::path& folder, const std::vector<std::string
                                        "stabilisation.plasticSamples=elasticState"};
     arguments.insert(arguments.end(), more.begin(), more.end());
     return test::runSolver(caseDir, arguments);
+}
+
+// Every point and field-data array of `plain` is in `probed`, bit for bit; the probed run adds
+// the probe's own state only (its mode, and field data).
+void checkProbedIsPlain(const VtuData& plain, const VtuData& probed)
+{
+    REQUIRE(plain.points.size() == probed.points.size());
+    CHECK(plain.points == probed.points);
+    for (const auto& [name, array] : plain.pointData)
+    {
+        INFO(name);
+        REQUIRE(probed.pointData.count(name));
+        CHECK(array.values == probed.pointData.at(name).values);
+    }
+    for (const auto& [name, array] : plain.fieldData)
+    {
+        INFO(name);
+        REQUIRE(probed.fieldData.count(name));
+        CHECK(array.values == probed.fieldData.at(name).values);
+    }
+    CHECK(probed.pointData.size() == plain.pointData.size() + 1); // operatorMode
+    CHECK(probed.fieldData.at("restart:operatorFrequency").values.at(0) > 0.0);
 }
 
 } // namespace
@@ -67,26 +90,51 @@ TEST_CASE("a probe that only reports leaves the run as it was, bit for bit", "[o
                                       "sphSchemes.timeIntegration={ probeInterval 5; }"}) == 0);
     const VtuData a = test::lastOutput(plain.path() / "impact");
     const VtuData b = test::lastOutput(probed.path() / "impact");
-    // Every array of the plain run is in the probed one, bit for bit; the probed run adds the
-    // probe's own state only.
-    REQUIRE(a.points.size() == b.points.size());
-    CHECK(a.points == b.points);
-    for (const auto& [name, array] : a.pointData)
-    {
-        INFO(name);
-        REQUIRE(b.pointData.count(name));
-        CHECK(array.values == b.pointData.at(name).values);
-    }
-    for (const auto& [name, array] : a.fieldData)
-    {
-        INFO(name);
-        REQUIRE(b.fieldData.count(name));
-        CHECK(array.values == b.fieldData.at(name).values);
-    }
-    CHECK(b.pointData.size() == a.pointData.size() + 1); // operatorMode
-    CHECK(b.fieldData.at("restart:operatorFrequency").values.at(0) > 0.0);
+    checkProbedIsPlain(a, b);
     const auto& alpha = a.pointData.at("plasticStrain").values;
     CHECK(*std::max_element(alpha.begin(), alpha.end()) > 0.01); // it flowed
+}
+
+// gradF sets its evaluation aside around the probe's (the samples' pending states and their
+// dissipation) instead of evaluating the level again: what it sets aside must be all the commit
+// reads. The column collapse's own scheme (UL gradF elasticState, conserving move weights, the
+// close-pair energy; Drucker–Prager, yielding from the gate's removal) and TL gradF with the
+// paper's per-sample history (j2Plasticity on the impact).
+TEST_CASE("a probe that only reports leaves gradF's runs as they were, bit for bit",
+          "[operatorProbe]")
+{
+    SECTION("the column collapse tutorial's scheme")
+    {
+        std::vector<VtuData> outputs;
+        for (const std::string timeIntegration : {"{ }", "{ probeInterval 5; }"})
+        {
+            test::TempDir dir;
+            const auto caseDir = test::copyTutorial("geomaterials/columnCollapse", dir.path());
+            REQUIRE(test::runParticles(caseDir, {"-set", "column.spacing=0.01"}) == 0);
+            REQUIRE(test::runSolver(caseDir, {"-set", "endTime=0.06", "-set",
+                                              "sphSchemes.timeIntegration=" + timeIntegration}) == 0);
+            outputs.push_back(test::lastOutput(caseDir));
+        }
+        checkProbedIsPlain(outputs[0], outputs[1]);
+        const auto& alpha = outputs[0].pointData.at("plasticStrain").values;
+        CHECK(*std::max_element(alpha.begin(), alpha.end()) > 0.01); // it flowed
+    }
+    SECTION("TL gradF, per-sample history")
+    {
+        std::vector<VtuData> outputs;
+        for (const std::string timeIntegration : {"{ }", "{ probeInterval 5; }"})
+        {
+            test::TempDir dir;
+            const auto caseDir = test::copyTutorial("plasticity2D/impact", dir.path());
+            REQUIRE(test::runParticles(caseDir) == 0);
+            REQUIRE(test::runSolver(caseDir, {"-set", "endTime=4e-6", "-set",
+                                              "formulation.type=totalLagrangian", "-set",
+                                              "stabilisation.type=gradF", "-set",
+                                              "sphSchemes.timeIntegration=" + timeIntegration}) == 0);
+            outputs.push_back(test::lastOutput(caseDir));
+        }
+        checkProbedIsPlain(outputs[0], outputs[1]);
+    }
 }
 
 // At courant 0.5 the impact face's neighbourhoods stiffen the operator past the leapfrog's limit
