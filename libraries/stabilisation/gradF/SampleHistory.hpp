@@ -198,6 +198,7 @@ public:
         slot_.swap(remapped_);
         offsets_.assign(list.offsets.begin(), list.offsets.end());
         resizePairArray(neighbours_, list.indices.size());
+#pragma omp parallel for schedule(static) if (useThreads(n))
         for (std::size_t k = 0; k < neighbours_.size(); ++k)
         {
             neighbours_[k] = global(list.indices[k]);
@@ -262,20 +263,35 @@ public:
         pending_.swap(aside_);
         aside_.clear(); // the probe's states: no memory held until the next probe
     }
-    // The states of the last evaluation become the committed ones, in place.
+    // The states of the last evaluation become the committed ones, in place: first a record
+    // for each sample that had none (the pool grows, one thread), then the copies, each
+    // evaluating thread's list by a thread (the lists name distinct slots).
     void commit()
     {
         for (Pending& p : pending_)
         {
+            for (const std::uint32_t slot : p.slots)
+            {
+                if (slot_[slot] == StatePool::none)
+                {
+                    slot_[slot] = pool_.allocate();
+                }
+            }
+        }
+        const std::size_t width = pool_.width();
+        const auto lists = static_cast<long>(pending_.size());
+#pragma omp parallel for schedule(static, 1) if (lists > 1 && omp_get_max_threads() > 1)
+        for (long t = 0; t < lists; ++t)
+        {
+            const Pending& p = pending_[static_cast<std::size_t>(t)];
             for (std::size_t i = 0; i < p.slots.size(); ++i)
             {
-                StatePool::Index& record = slot_[p.slots[i]];
-                if (record == StatePool::none)
+                const double* state = &p.states[i * width];
+                double* record = pool_.at(slot_[p.slots[i]]);
+                for (std::size_t k = 0; k < width; ++k)
                 {
-                    record = pool_.allocate();
+                    record[k] = state[k];
                 }
-                const double* state = &p.states[i * pool_.width()];
-                std::copy(state, state + pool_.width(), pool_.at(record));
             }
         }
         clearPending();
