@@ -235,6 +235,14 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
     {
         newK->resize(n);
     }
+    // The frames moveHistory() computed at these positions, if it was called just before.
+    std::vector<double> frames;
+    if (movedFramesAt_ == x.data() && movedFrames_.size() == n)
+    {
+        frames.swap(movedFrames_);
+    }
+    movedFrames_.clear();
+    movedFramesAt_ = nullptr;
 #pragma omp parallel if (useThreads(n))
     {
     Scratch scratch;
@@ -242,10 +250,21 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
 #pragma omp for schedule(static)
     for (std::size_t a = 0; a < n; ++a)
     {
+        const bool spatial = a < spatialFrame_.size() && spatialFrame_[a];
+        if (spatial && !frames.empty())
+        {
+            // elasticState (§G4), the frame as moveHistory() found it.
+            F[a] = frames[a] * Mat<D>::Identity();
+            if (newK)
+            {
+                (*newK)[a] = Tensor3<D>::zero();
+            }
+            continue;
+        }
         const Kinematics kin = kinematics(a, x, ref, false, scratch);
         F[a] = kin.F;
 
-        if (a < spatialFrame_.size() && spatialFrame_[a])
+        if (spatial)
         {
             // elasticState (§G4): the samples carry the gradient, the states the shape.
             F[a] = std::pow(kin.F.determinant(), 1.0 / D) * Mat<D>::Identity();

@@ -194,6 +194,11 @@ private:
     // it sets to the dilation J^(1/D) I (§G4), marked by moveHistory() for the
     // referenceUpdate() that follows it.
     std::vector<std::uint8_t> spatialFrame_;
+    // J_a^(1/D) of those particles at the positions moveHistory() was given, handed to the
+    // referenceUpdate() that follows it with the same positions (which would compute the same
+    // kinematics again), and taken by it: `mutable` for that hand-over only.
+    mutable std::vector<double> movedFrames_;
+    mutable const Vec<D>* movedFramesAt_ = nullptr;
     // elasticState: an inverted stress sample found by moveHistory() (det f_b(a) <= 0: its
     // rebased state would be the mirror image's, which the materials cannot tell apart, §G3),
     // reported by the referenceUpdate() that follows it.

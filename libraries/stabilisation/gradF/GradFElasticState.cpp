@@ -37,6 +37,8 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
     // (§G3: none unless the step was unstable). be = F Cp⁻¹ Fᵀ is positive definite for det F < 0
     // too, so an inverted sample would carry on as its mirror image: the move refuses it instead.
     std::vector<double> inverted(n, 1.0);
+    movedFrames_.assign(n, 0.0);
+    movedFramesAt_ = x.data();
     samples_.storeEveryState(body, materials); // none stays the initial one
 #pragma omp parallel if (useThreads(n))
     {
@@ -52,7 +54,8 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
             }
             spatialFrame_[a] = 1;
             const Kinematics kin = kinematics(a, x, ref, false, scratch);
-            const Mat<D> frame = std::pow(kin.F.determinant(), 1.0 / D) * Mat<D>::Identity();
+            movedFrames_[a] = std::pow(kin.F.determinant(), 1.0 / D);
+            const Mat<D> frame = movedFrames_[a] * Mat<D>::Identity();
             const std::size_t first = list.begin(a);
             const double Jr = ref.F[a].determinant();
             const double smallest = fillSamples(kin, list.count(a), scratch, particleVolume_, true) / Jr;

@@ -17,6 +17,7 @@
 #include "stabilisation/gradF/GradF.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <map>
 
 using namespace sph;
@@ -488,4 +489,45 @@ TEST_CASE("gradF elasticState: an elastic material gives the paper's gradF bit f
         CHECK(K > 0.0); // K is carried
     }
     CHECK(T[0] == T[1]);
+}
+
+// A move (moveHistory, then referenceUpdate at the same positions) hands the frames J^(1/D) I it
+// computed to referenceUpdate instead of computing the kinematics again: the same F^r, bit for
+// bit, as a referenceUpdate of its own at those positions; and positions other than the move's
+// are not given the move's frames.
+TEST_CASE("gradF elasticState: a move's frames are those referenceUpdate computes itself",
+          "[plasticity][gradF]")
+{
+    test::loadModelLibraries();
+    test::SchemeFixture<2> f(test::schemeCloud<2>(7), kElasticState, kPlastic, false,
+                             test::schemeHOverDx<2>());
+    const auto x1 = test::deformCurrent<2>(f.ref.x, 17);
+    REQUIRE(f.commit(x1) > 0.0);
+    // Its own: at a copy of the move's positions (not the vector the move was given).
+    f.scheme->moveHistory(x1, f.ref, f.body, {f.material.get()});
+    const std::vector<Vec<2>> copy = x1;
+    std::vector<Mat<2>> own;
+    REQUIRE(f.scheme->referenceUpdate(copy, f.ref, own, nullptr).ok());
+    std::vector<Mat<2>> handed;
+    f.scheme->moveHistory(x1, f.ref, f.body, {f.material.get()});
+    REQUIRE(f.scheme->referenceUpdate(x1, f.ref, handed, nullptr).ok());
+    REQUIRE(handed.size() == own.size());
+    std::size_t frames = 0;
+    for (std::size_t a = 0; a < own.size(); ++a)
+    {
+        CHECK(std::memcmp(own[a].data(), handed[a].data(), sizeof(Mat<2>)) == 0);
+        frames += handed[a](0, 1) == 0.0 && handed[a](0, 0) == handed[a](1, 1) ? 1 : 0;
+    }
+    CHECK(frames == own.size()); // every particle's is a dilation
+    // Other positions after the move: computed there, not the move's.
+    const auto x2 = test::step<2>(x1, 0.05, 3);
+    f.scheme->moveHistory(x1, f.ref, f.body, {f.material.get()});
+    std::vector<Mat<2>> elsewhere;
+    REQUIRE(f.scheme->referenceUpdate(x2, f.ref, elsewhere, nullptr).ok());
+    std::vector<Mat<2>> ownElsewhere;
+    REQUIRE(f.scheme->referenceUpdate(x2, f.ref, ownElsewhere, nullptr).ok());
+    for (std::size_t a = 0; a < own.size(); ++a)
+    {
+        CHECK(std::memcmp(ownElsewhere[a].data(), elsewhere[a].data(), sizeof(Mat<2>)) == 0);
+    }
 }
