@@ -102,7 +102,8 @@ private:
 
     using FunctionState = std::map<std::string, double>; // "fo:<name>:<key>" -> value
 
-    // Simulation.cpp: the time loop and its phases (reads -> writes)
+    // Simulation.cpp: the time loop and its phases (reads -> writes); the forces of a level in
+    // SimulationForces.cpp, the motion of a step (drift to checkOrder) in SimulationMotion.cpp
     void advance(RunLog& log, bool restarted);
     // This rank's request to stop (StopCode: a signal's number, writeNow, none); rank 0 reads
     // controlDict again when it changed.
