@@ -451,3 +451,4 @@ double ReturnMapPlasticity<D, Model>::commit(const Mat<D>* F, const double* V0, 
 } // namespace sph
 
 #include "materials/plasticity/ReturnMapLanes.hpp"
+#include "materials/plasticity/ReturnMapPaths.hpp"

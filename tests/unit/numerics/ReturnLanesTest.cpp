@@ -1,4 +1,5 @@
-// The returns in lanes (libraries/materials/plasticity/ReturnLanes.hpp, ReturnMapLanes.hpp).
+// The returns in lanes (libraries/materials/plasticity/ReturnLanes.hpp, ReturnMapLanes.hpp and
+// the paths through them, ReturnMapPaths.hpp).
 // Every return of a plastic material runs the same code, eight points at a time (a particle's
 // stress samples, a chunk of particles) or one at a time (returnMap: the wave speed or the
 // commit of a particle the memo does not hold, e.g. after a restart). A point must give the

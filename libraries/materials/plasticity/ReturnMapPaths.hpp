@@ -1,0 +1,174 @@
+#pragma once
+// The paths through ReturnMapPlasticity's return in lanes (ReturnMapLanes.hpp): evaluate (a
+// body's stress samples, with their states; a chunk of particles, with the memo), and the
+// particles' own returns the memo does not hold (the wave speed, the commit). Included at the
+// end of ReturnMapPlasticity.hpp, whose members it defines.
+
+#include "materials/plasticity/ReturnMapLanes.hpp"
+
+namespace sph
+{
+
+template <int D, class Model>
+void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double* psi,
+                                             std::size_t n, HistoryOf history) const
+{
+    for (std::size_t i = 0; i < n;)
+    {
+        if constexpr (D >= 2)
+        {
+            const std::size_t count = std::min(lanes, n - i);
+            if (history.perSample())
+            {
+                HistoryOf chunk = history;
+                chunk.states += i * history.stride;
+                if (history.next)
+                {
+                    chunk.next += i * history.stride;
+                    chunk.dissipation += i;
+                }
+                evaluateSamplesInLanes(F + i, P + i, psi ? psi + i : nullptr, count, chunk);
+                i += count;
+                continue;
+            }
+            if (!history.trialAround)
+            {
+                evaluateParticlesInLanes(F + i, P + i, psi ? psi + i : nullptr, count,
+                                         history.particle(i));
+                i += count;
+                continue;
+            }
+        }
+        // The bar, and the trial (elastic predictor) around one particle: point by point.
+        const bool perSample = history.perSample();
+        const State s = perSample ? State::unpack(history.states + i * history.stride)
+                                  : state(history.particle(i));
+        const bool flow = perSample || !history.trialAround;
+        const bool wantNext = perSample ? history.next != nullptr : flow;
+        const Result r = returnMap(F[i], s, wantNext, flow);
+        P[i] = r.P;
+        if (psi)
+        {
+            psi[i] = r.energy;
+        }
+        if (!perSample && flow)
+        {
+            memo_.store(history.particle(i), F[i], s, {r.waveModulus, r.flow, r.next});
+        }
+        if (perSample && wantNext)
+        {
+            const double* committed = history.states + i * history.stride;
+            double* next = history.next + i * history.stride;
+            if (r.flow.deltaGamma > 0.0)
+            {
+                r.next.pack(next);
+            }
+            else
+            {
+                std::copy(committed, committed + State::packedSize, next);
+            }
+            history.dissipation[i] = r.flow.dissipation;
+        }
+        ++i;
+    }
+}
+
+template <int D, class Model>
+void ReturnMapPlasticity<D, Model>::evaluateParticlesInLanes(const Mat<D>* F, Mat<D>* P,
+                                                             double* psi, std::size_t count,
+                                                             std::size_t firstParticle) const
+{
+    if constexpr (D >= 2)
+    {
+        double states[lanes * State::packedSize];
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            state(firstParticle + i).pack(states + i * State::packedSize);
+        }
+        LanesResult<lanes> out;
+        returnInLanes<lanes>(F, states, State::packedSize, count, true, true, out);
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            const int lane = static_cast<int>(i);
+            P[i] = out.stressAt(lane);
+            if (psi)
+            {
+                psi[i] = out.energy[i];
+            }
+            memo_.store(firstParticle + i, F[i], State::unpack(states + i * State::packedSize),
+                        {out.waveModulus[i], out.flowAt(lane), out.nextAt(lane)});
+        }
+    }
+}
+
+template <int D, class Model>
+void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<D>* P, double* psi,
+                                                           std::size_t count,
+                                                           const HistoryOf& history) const
+{
+    if constexpr (D >= 2)
+    {
+        const bool wantNext = history.next != nullptr;
+        LanesResult<lanes> out;
+        returnInLanes<lanes>(F, history.states, history.stride, count, true, wantNext, out);
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            const int lane = static_cast<int>(i);
+            P[i] = out.stressAt(lane);
+            if (psi)
+            {
+                psi[i] = out.energy[i];
+            }
+            if (wantNext)
+            {
+                out.packNext(lane, history.next + i * history.stride);
+                history.dissipation[i] = out.flow.dissipation[i];
+            }
+        }
+    }
+}
+
+template <int D, class Model>
+void ReturnMapPlasticity<D, Model>::particleReturns(const Mat<D>* F, std::size_t first,
+                                                    std::size_t n,
+                                                    typename ReturnMemo<D>::Entry* out) const
+{
+    if constexpr (D == 1)
+    {
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            out[i] = particleReturn(first + i, F[i], state(first + i));
+        }
+    }
+    else
+    {
+        std::size_t missing[lanes];
+        Mat<D> missingF[lanes];
+        double states[lanes * State::packedSize];
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const State s = state(first + i);
+            if (!memo_.find(first + i, F[i], s, out[i]))
+            {
+                missing[count] = i;
+                missingF[count] = F[i];
+                s.pack(states + count * State::packedSize);
+                ++count;
+            }
+        }
+        if (count == 0)
+        {
+            return;
+        }
+        LanesResult<lanes> r;
+        returnInLanes<lanes>(missingF, states, State::packedSize, count, true, true, r);
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            const int lane = static_cast<int>(j);
+            out[missing[j]] = {r.waveModulus[lane], r.flowAt(lane), r.nextAt(lane)};
+        }
+    }
+}
+
+} // namespace sph
