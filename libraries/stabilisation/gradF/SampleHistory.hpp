@@ -16,6 +16,8 @@
 // slot by the neighbour's global index; a pair that is new starts from its owner's committed
 // particle state (= its own sample a–a).
 //
+// follow() and its helpers are defined in SampleHistoryLayout.hpp, included at the end.
+//
 // To the field registry the states are a ragged particle field (particles/RaggedArray.hpp):
 // particle a's entries are its samples, each [neighbour's global index, packed state]. So they
 // move with their particle between ranks (a ghost gets its owner's states when it is gathered,
@@ -102,115 +104,7 @@ public:
     // is of the same material and a had samples before (the first layout starts from a's).
     void follow(const NeighbourList& list, const std::vector<int>& body,
                 const std::vector<const Material<D>*>& materials, const std::vector<int>* globalId,
-                const std::vector<Mat<D>>* Fr = nullptr)
-    {
-        if (current_ || !active())
-        {
-            return;
-        }
-        const std::size_t n = list.particleCount();
-        if (offsets_.size() != n + 1)
-        {
-            throw std::logic_error("SampleHistory: the states are of " + std::to_string(size()) +
-                                   " particles, the list of " + std::to_string(n));
-        }
-        const auto global = [globalId](std::size_t b) {
-            return globalId ? (*globalId)[b] : static_cast<int>(b);
-        };
-        // The new slots name the records of the kept pairs (whose old slots are marked
-        // `moved`), or say where a new pair's state comes from. Into a buffer kept between
-        // moves (no allocation once grown: the reference moves every step).
-        resizePairArray(remapped_, list.pairCount());
-        if (weighted_)
-        {
-            remappedWeights_.resize(list.pairCount());
-        }
-        std::vector<std::uint8_t> hasNew(n, 0);
-#pragma omp parallel if (useThreads(n))
-        {
-            std::array<double, maxStride> owner{};
-#pragma omp for schedule(static)
-            for (std::size_t a = 0; a < n; ++a)
-            {
-                const Material<D>* material = materials[static_cast<std::size_t>(body[a])];
-                if (material->historyComponents() == 0)
-                {
-                    std::fill(&remapped_[list.begin(a)], &remapped_[list.begin(a)] + list.count(a),
-                              StatePool::none); // never read
-                    continue;
-                }
-                material->packHistory(a, owner.data());
-                const bool ownerInitial = isInitial(owner.data());
-                std::size_t old = offsets_[a];
-                const std::size_t oldEnd = offsets_[a + 1];
-                for (std::size_t k = list.begin(a); k < list.end(a); ++k)
-                {
-                    // Both: a itself first, then its neighbours in increasing global index
-                    // (local particles are in increasing global index).
-                    const int b = global(list.indices[k]);
-                    const bool self = k == list.begin(a);
-                    while (!self && old < oldEnd && (old == offsets_[a] || neighbours_[old] < b))
-                    {
-                        ++old;
-                    }
-                    const bool kept = old < oldEnd && neighbours_[old] == b;
-                    const std::size_t local = list.indices[k];
-                    if (weighted_)
-                    {
-                        const bool firstLayout = oldEnd == offsets_[a];
-                        remappedWeights_[k] = kept          ? weights_[old]
-                                              : firstLayout ? std::numeric_limits<double>::quiet_NaN()
-                                                            : 0.0;
-                    }
-                    if (kept)
-                    {
-                        remapped_[k] = slot_[old];
-                        slot_[old] = moved;
-                    }
-                    // (A particle with no states yet is being laid out for the first time:
-                    // its samples start virgin, as its own state does.)
-                    else if (!self && Fr && oldEnd > offsets_[a] &&
-                             materials[static_cast<std::size_t>(body[local])] == material)
-                    {
-                        remapped_[k] = fromNeighbour;
-                        hasNew[a] = 1;
-                    }
-                    else
-                    {
-                        remapped_[k] = ownerInitial ? StatePool::none : fromOwner;
-                        hasNew[a] = !ownerInitial || hasNew[a];
-                    }
-                }
-            }
-        }
-        if (weighted_)
-        {
-            setAsideLeaving(body, materials);
-            weights_.swap(remappedWeights_);
-        }
-        for (const StatePool::Index leaving : slot_)
-        {
-            if (isRecord(leaving))
-            {
-                pool_.release(leaving);
-            }
-        }
-        slot_.swap(remapped_);
-        offsets_.assign(list.offsets.begin(), list.offsets.end());
-        resizePairArray(neighbours_, list.indices.size());
-#pragma omp parallel for schedule(static) if (useThreads(n))
-        for (std::size_t k = 0; k < neighbours_.size(); ++k)
-        {
-            neighbours_[k] = global(list.indices[k]);
-        }
-        storeNewStates(list, body, materials, hasNew, Fr);
-        if (pool_.allocatedSinceOrdered() * relocateAfter > pool_.held())
-        {
-            relocateInSlotOrder();
-        }
-        clearPending();
-        current_ = true;
-    }
+                const std::vector<Mat<D>>* Fr = nullptr);
 
     // The committed states of the samples in slots first .. first + count, unpacked into
     // `out` (stride() numbers each).
@@ -457,88 +351,16 @@ private:
     // The records laid out in the order of the slots that name them, so that an evaluation
     // (which reads them particle by particle) streams through the pool. Only where they are
     // stored changes: every state, and so every result, is the same.
-    void relocateInSlotOrder()
-    {
-        // (follow()'s buffer, free again here, holds the destinations: no allocation.)
-        std::vector<StatePool::Index>& destination = remapped_;
-        resizePairArray(destination, pool_.extent());
-        std::fill(destination.begin(), destination.end(), StatePool::none);
-        StatePool::Index next = 0;
-        for (StatePool::Index& record : slot_)
-        {
-            if (isRecord(record))
-            {
-                destination[record] = next;
-                record = next++;
-            }
-        }
-        pool_.relocate(destination);
-    }
+    void relocateInSlotOrder();
 
     // follow()'s new pairs that start from a state of their own, in slot order.
     void storeNewStates(const NeighbourList& list, const std::vector<int>& body,
                         const std::vector<const Material<D>*>& materials,
-                        const std::vector<std::uint8_t>& hasNew, const std::vector<Mat<D>>* Fr)
-    {
-        std::array<double, maxStride> state{};
-        for (std::size_t a = 0; a < hasNew.size(); ++a)
-        {
-            if (!hasNew[a])
-            {
-                continue;
-            }
-            const Material<D>* material = materials[static_cast<std::size_t>(body[a])];
-            for (std::size_t k = list.begin(a); k < list.end(a); ++k)
-            {
-                if (slot_[k] == fromOwner)
-                {
-                    material->packHistory(a, state.data());
-                }
-                else if (slot_[k] == fromNeighbour)
-                {
-                    const std::size_t local = list.indices[k];
-                    material->packHistory(local, state.data());
-                    material->rebaseHistory(state.data(), (*Fr)[local], (*Fr)[a]);
-                }
-                else
-                {
-                    continue;
-                }
-                slot_[k] = StatePool::none;
-                if (!isInitial(state.data()))
-                {
-                    slot_[k] = pool_.allocate();
-                    compact(state.data(), pool_.at(slot_[k]));
-                }
-            }
-        }
-    }
+                        const std::vector<std::uint8_t>& hasNew, const std::vector<Mat<D>>* Fr);
 
     // The old slots follow() did not keep (not `moved`), of particles with history that had
     // samples: their weights and states, by particle (before the old layout is dropped).
-    void setAsideLeaving(const std::vector<int>& body, const std::vector<const Material<D>*>& materials)
-    {
-        const std::size_t n = offsets_.size() - 1;
-        leavingOffsets_.assign(n + 1, 0);
-        leavingWeights_.clear();
-        leavingStates_.clear();
-        for (std::size_t a = 0; a < n; ++a)
-        {
-            if (materials[static_cast<std::size_t>(body[a])]->historyComponents() > 0)
-            {
-                for (std::size_t old = offsets_[a]; old < offsets_[a + 1]; ++old)
-                {
-                    if (slot_[old] != moved)
-                    {
-                        leavingWeights_.push_back(weights_[old]);
-                        leavingStates_.resize(leavingStates_.size() + stride_);
-                        readSlot(old, &leavingStates_[leavingStates_.size() - stride_]);
-                    }
-                }
-            }
-            leavingOffsets_[a + 1] = leavingWeights_.size();
-        }
-    }
+    void setAsideLeaving(const std::vector<int>& body, const std::vector<const Material<D>*>& materials);
 
     // The states one thread's evaluations found to commit: slots, and compact states.
     struct Pending
@@ -570,3 +392,5 @@ private:
 };
 
 } // namespace sph
+
+#include "stabilisation/gradF/SampleHistoryLayout.hpp"

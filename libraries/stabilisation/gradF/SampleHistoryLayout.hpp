@@ -1,0 +1,210 @@
+#pragma once
+// SampleHistory's layout along the neighbour list (SampleHistory.hpp includes this at its end):
+// follow() moves each state to its pair's new slot when the list changes, new pairs take their
+// owner's or their neighbour's state, the pairs that leave are set aside with their weights, and
+// the records are put back in slot order once they have scattered.
+
+#include "stabilisation/gradF/SampleHistory.hpp"
+
+namespace sph
+{
+
+template <int D>
+void SampleHistory<D>::follow(const NeighbourList& list, const std::vector<int>& body,
+                              const std::vector<const Material<D>*>& materials,
+                              const std::vector<int>* globalId, const std::vector<Mat<D>>* Fr)
+{
+    if (current_ || !active())
+    {
+        return;
+    }
+    const std::size_t n = list.particleCount();
+    if (offsets_.size() != n + 1)
+    {
+        throw std::logic_error("SampleHistory: the states are of " + std::to_string(size()) +
+                               " particles, the list of " + std::to_string(n));
+    }
+    const auto global = [globalId](std::size_t b) {
+        return globalId ? (*globalId)[b] : static_cast<int>(b);
+    };
+    // The new slots name the records of the kept pairs (whose old slots are marked
+    // `moved`), or say where a new pair's state comes from. Into a buffer kept between
+    // moves (no allocation once grown: the reference moves every step).
+    resizePairArray(remapped_, list.pairCount());
+    if (weighted_)
+    {
+        remappedWeights_.resize(list.pairCount());
+    }
+    std::vector<std::uint8_t> hasNew(n, 0);
+#pragma omp parallel if (useThreads(n))
+    {
+        std::array<double, maxStride> owner{};
+#pragma omp for schedule(static)
+        for (std::size_t a = 0; a < n; ++a)
+        {
+            const Material<D>* material = materials[static_cast<std::size_t>(body[a])];
+            if (material->historyComponents() == 0)
+            {
+                std::fill(&remapped_[list.begin(a)], &remapped_[list.begin(a)] + list.count(a),
+                          StatePool::none); // never read
+                continue;
+            }
+            material->packHistory(a, owner.data());
+            const bool ownerInitial = isInitial(owner.data());
+            std::size_t old = offsets_[a];
+            const std::size_t oldEnd = offsets_[a + 1];
+            for (std::size_t k = list.begin(a); k < list.end(a); ++k)
+            {
+                // Both: a itself first, then its neighbours in increasing global index
+                // (local particles are in increasing global index).
+                const int b = global(list.indices[k]);
+                const bool self = k == list.begin(a);
+                while (!self && old < oldEnd && (old == offsets_[a] || neighbours_[old] < b))
+                {
+                    ++old;
+                }
+                const bool kept = old < oldEnd && neighbours_[old] == b;
+                const std::size_t local = list.indices[k];
+                if (weighted_)
+                {
+                    const bool firstLayout = oldEnd == offsets_[a];
+                    remappedWeights_[k] = kept          ? weights_[old]
+                                          : firstLayout ? std::numeric_limits<double>::quiet_NaN()
+                                                        : 0.0;
+                }
+                if (kept)
+                {
+                    remapped_[k] = slot_[old];
+                    slot_[old] = moved;
+                }
+                // (A particle with no states yet is being laid out for the first time:
+                // its samples start virgin, as its own state does.)
+                else if (!self && Fr && oldEnd > offsets_[a] &&
+                         materials[static_cast<std::size_t>(body[local])] == material)
+                {
+                    remapped_[k] = fromNeighbour;
+                    hasNew[a] = 1;
+                }
+                else
+                {
+                    remapped_[k] = ownerInitial ? StatePool::none : fromOwner;
+                    hasNew[a] = !ownerInitial || hasNew[a];
+                }
+            }
+        }
+    }
+    if (weighted_)
+    {
+        setAsideLeaving(body, materials);
+        weights_.swap(remappedWeights_);
+    }
+    for (const StatePool::Index leaving : slot_)
+    {
+        if (isRecord(leaving))
+        {
+            pool_.release(leaving);
+        }
+    }
+    slot_.swap(remapped_);
+    offsets_.assign(list.offsets.begin(), list.offsets.end());
+    resizePairArray(neighbours_, list.indices.size());
+#pragma omp parallel for schedule(static) if (useThreads(n))
+    for (std::size_t k = 0; k < neighbours_.size(); ++k)
+    {
+        neighbours_[k] = global(list.indices[k]);
+    }
+    storeNewStates(list, body, materials, hasNew, Fr);
+    if (pool_.allocatedSinceOrdered() * relocateAfter > pool_.held())
+    {
+        relocateInSlotOrder();
+    }
+    clearPending();
+    current_ = true;
+}
+
+template <int D>
+void SampleHistory<D>::relocateInSlotOrder()
+{
+    // (follow()'s buffer, free again here, holds the destinations: no allocation.)
+    std::vector<StatePool::Index>& destination = remapped_;
+    resizePairArray(destination, pool_.extent());
+    std::fill(destination.begin(), destination.end(), StatePool::none);
+    StatePool::Index next = 0;
+    for (StatePool::Index& record : slot_)
+    {
+        if (isRecord(record))
+        {
+            destination[record] = next;
+            record = next++;
+        }
+    }
+    pool_.relocate(destination);
+}
+
+template <int D>
+void SampleHistory<D>::storeNewStates(const NeighbourList& list, const std::vector<int>& body,
+                                      const std::vector<const Material<D>*>& materials,
+                                      const std::vector<std::uint8_t>& hasNew,
+                                      const std::vector<Mat<D>>* Fr)
+{
+    std::array<double, maxStride> state{};
+    for (std::size_t a = 0; a < hasNew.size(); ++a)
+    {
+        if (!hasNew[a])
+        {
+            continue;
+        }
+        const Material<D>* material = materials[static_cast<std::size_t>(body[a])];
+        for (std::size_t k = list.begin(a); k < list.end(a); ++k)
+        {
+            if (slot_[k] == fromOwner)
+            {
+                material->packHistory(a, state.data());
+            }
+            else if (slot_[k] == fromNeighbour)
+            {
+                const std::size_t local = list.indices[k];
+                material->packHistory(local, state.data());
+                material->rebaseHistory(state.data(), (*Fr)[local], (*Fr)[a]);
+            }
+            else
+            {
+                continue;
+            }
+            slot_[k] = StatePool::none;
+            if (!isInitial(state.data()))
+            {
+                slot_[k] = pool_.allocate();
+                compact(state.data(), pool_.at(slot_[k]));
+            }
+        }
+    }
+}
+
+template <int D>
+void SampleHistory<D>::setAsideLeaving(const std::vector<int>& body,
+                                       const std::vector<const Material<D>*>& materials)
+{
+    const std::size_t n = offsets_.size() - 1;
+    leavingOffsets_.assign(n + 1, 0);
+    leavingWeights_.clear();
+    leavingStates_.clear();
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        if (materials[static_cast<std::size_t>(body[a])]->historyComponents() > 0)
+        {
+            for (std::size_t old = offsets_[a]; old < offsets_[a + 1]; ++old)
+            {
+                if (slot_[old] != moved)
+                {
+                    leavingWeights_.push_back(weights_[old]);
+                    leavingStates_.resize(leavingStates_.size() + stride_);
+                    readSlot(old, &leavingStates_[leavingStates_.size() - stride_]);
+                }
+            }
+        }
+        leavingOffsets_[a + 1] = leavingWeights_.size();
+    }
+}
+
+} // namespace sph
