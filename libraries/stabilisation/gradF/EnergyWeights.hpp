@@ -50,36 +50,23 @@ inline EnergyWeightsResult chooseEnergyWeights(const double* kernel, const doubl
     // Round-off of the sums: a few ulps of the energies' magnitude.
     const double tolerance = 8.0 * std::numeric_limits<double>::epsilon() *
                              (std::abs(mean) + spread + std::abs(target));
-    // The sums' arithmetic is spelt out (w u once, its square's sum fused) so that the two
-    // loops below give the same digits whatever the compiler contracts.
+    // The sums' arithmetic is spelt out (w u once, its square's sum fused): the digits then do
+    // not depend on how the compiler contracts the loop. At λ = 0 (the first pass of every move)
+    // exp(−0 u) = 1 exactly for finite u, so no exp is needed.
     const auto weightsAt = [&](double lambda, double& e, double& variance) {
         double z = 0.0;
         double first = 0.0;
         double second = 0.0;
-        const auto add = [&](std::size_t j, double w, double u) {
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            const double u = energy[j] - mean;
+            const double factor = lambda == 0.0 && std::isfinite(u) ? 1.0 : std::exp(-lambda * u);
+            const double w = kernel[j] > 0.0 ? kernel[j] * factor : 0.0;
             omega[j] = w;
             z += w;
             const double wu = w * u;
             first += wu;
             second = std::fma(wu, u, second);
-        };
-        if (lambda == 0.0)
-        {
-            // exp(−0 u) = 1 exactly for finite u: the first pass of every move needs no exp.
-            for (std::size_t j = 0; j < count; ++j)
-            {
-                const double u = energy[j] - mean;
-                const double factor = std::isfinite(u) ? 1.0 : std::exp(-lambda * u);
-                add(j, kernel[j] > 0.0 ? kernel[j] * factor : 0.0, u);
-            }
-        }
-        else
-        {
-            for (std::size_t j = 0; j < count; ++j)
-            {
-                const double u = energy[j] - mean;
-                add(j, kernel[j] > 0.0 ? kernel[j] * std::exp(-lambda * u) : 0.0, u);
-            }
         }
         for (std::size_t j = 0; j < count; ++j)
         {

@@ -235,13 +235,9 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
     {
         newK->resize(n);
     }
-    // The frames moveHistory() computed at these positions, if it was called just before.
-    std::vector<double> frames;
-    if (movedFramesAt_ == x.data() && movedFrames_.size() == n)
-    {
-        frames.swap(movedFrames_);
-    }
-    movedFrames_.clear();
+    // The frames moveHistory() computed at these positions, if it was called just before
+    // (taken once: a later call computes its own).
+    const bool handed = movedFramesAt_ == x.data() && movedFrames_.size() == n;
     movedFramesAt_ = nullptr;
 #pragma omp parallel if (useThreads(n))
     {
@@ -251,10 +247,10 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
     for (std::size_t a = 0; a < n; ++a)
     {
         const bool spatial = a < spatialFrame_.size() && spatialFrame_[a];
-        if (spatial && !frames.empty())
+        if (spatial && handed)
         {
             // elasticState (§G4), the frame as moveHistory() found it.
-            F[a] = frames[a] * Mat<D>::Identity();
+            F[a] = movedFrames_[a] * Mat<D>::Identity();
             if (newK)
             {
                 (*newK)[a] = Tensor3<D>::zero();
