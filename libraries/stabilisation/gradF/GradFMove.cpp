@@ -1,7 +1,8 @@
-// gradF's plasticSamples elasticState (docs/theory/gradF-plastic.md): what a move of the
-// reference configuration does to the samples' states and the particles' own. The samples'
+// gradF's moves of the reference configuration: referenceUpdate() (F^r and K) and, with
+// plasticSamples elasticState (docs/theory/gradF-plastic.md), what a move does to the samples'
+// states and the particles' own, and the energy weights the move chooses (§G9). The samples'
 // evaluation and commit are those of every per-sample history (GradFHistory.cpp); the frame
-// F^r = J^(1/D) I and K = 0 are set by referenceUpdate (GradF.cpp) for the particles marked here.
+// F^r = J^(1/D) I and K = 0 are set by referenceUpdate (below) for the particles marked here.
 #include "stabilisation/gradF/EnergyWeights.hpp"
 #include "stabilisation/gradF/GradF.hpp"
 
@@ -83,6 +84,83 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
     }
 }
 
+// The move itself: F^r = f F^r at x (and, for the paper's samples, K' = G f⁻¹); for the particles
+// marked by moveHistory() the dilation frame it computed.
+template <int D>
+ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
+                                      const ReferenceConfiguration<D>& ref, std::vector<Mat<D>>& F,
+                                      std::vector<Tensor3<D>>* newK) const
+{
+    const std::size_t n = ref.size();
+    F.resize(n);
+    if (newK)
+    {
+        newK->resize(n);
+    }
+    // The frames moveHistory() computed at these positions, if it was called just before
+    // (taken once: a later call computes its own).
+    const bool handed = movedFramesAt_ == x.data() && movedFrames_.size() == n;
+    movedFramesAt_ = nullptr;
+#pragma omp parallel if (useThreads(n))
+    {
+    Scratch scratch;
+    scratch.resize(maxNeighbours_);
+#pragma omp for schedule(static)
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        const bool spatial = a < spatialFrame_.size() && spatialFrame_[a];
+        if (spatial && handed)
+        {
+            // elasticState (§G4), the frame as moveHistory() found it.
+            F[a] = movedFrames_[a] * Mat<D>::Identity();
+            if (newK)
+            {
+                (*newK)[a] = Tensor3<D>::zero();
+            }
+            continue;
+        }
+        const Kinematics kin = kinematics(a, x, ref, false, scratch);
+        F[a] = kin.F;
+
+        if (spatial)
+        {
+            // elasticState (§G4): the samples carry the gradient, the states the shape.
+            F[a] = std::pow(kin.F.determinant(), 1.0 / D) * Mat<D>::Identity();
+            if (newK)
+            {
+                (*newK)[a] = Tensor3<D>::zero();
+            }
+        }
+        else if (newK)
+        {
+            // K' = G f^{-1} on the derivative index: K'_ijk = G_ijl (f^{-1})_lk (spec §6.5).
+            const Mat<D> finv = kin.f.inverse();
+            for (int k = 0; k < D; ++k)
+            {
+                Mat<D> slice = Mat<D>::Zero();
+                for (int l = 0; l < D; ++l)
+                {
+                    slice += kin.G.slice[static_cast<std::size_t>(l)] * finv(l, k);
+                }
+                (*newK)[a].slice[static_cast<std::size_t>(k)] = slice;
+            }
+        }
+    }
+    }
+    ForceStatus status;
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        double J;
+        if (ref.counts(a) && !admissible<D>(F[a], J))
+        {
+            status = ForceStatus::failed(FailureKind::nonPositiveJacobian, static_cast<long>(a), J,
+                                         "det F");
+            break;
+        }
+    }
+    return status.ok() ? sampleInversion_ : status;
+}
+
 // moveWeights (§G9). The samples' energy E_a before the move = Σ_kept ω_ab W_ab (their W is
 // unchanged by the move, G4.1) + Σ_left ω_ab W_ab (the pairs that left, from their rebased
 // states at F^r_a); new pairs had ω = 0.
@@ -157,6 +235,15 @@ double GradF<D>::useEnergyWeights(std::size_t a, const Material<D>& material,
 }
 
 // GradF<D> is instantiated in GradF.cpp; these members are defined here.
+template ForceStatus GradF<1>::referenceUpdate(const std::vector<Vec<1>>&,
+                                               const ReferenceConfiguration<1>&,
+                                               std::vector<Mat<1>>&, std::vector<Tensor3<1>>*) const;
+template ForceStatus GradF<2>::referenceUpdate(const std::vector<Vec<2>>&,
+                                               const ReferenceConfiguration<2>&,
+                                               std::vector<Mat<2>>&, std::vector<Tensor3<2>>*) const;
+template ForceStatus GradF<3>::referenceUpdate(const std::vector<Vec<3>>&,
+                                               const ReferenceConfiguration<3>&,
+                                               std::vector<Mat<3>>&, std::vector<Tensor3<3>>*) const;
 template double GradF<1>::useEnergyWeights(std::size_t, const Material<1>&,
                                              const NeighbourList&, const Mat<1>&, bool,
                                              Scratch&);
