@@ -47,7 +47,16 @@ Schema GradF<D>::schema()
                        "has a plastic history, 2D and 3D; with `impenetrability` in sphSchemes, "
                        "docs/theory/gradF-plastic.md §G13-§G14)")
                  .choices({"own", "particle"})
-                 .defaultValue("own"));
+                 .defaultValue("own"))
+        .add(Key::word("fit",
+                       "how F_a and its gradient are fitted to the neighbours: sequential (as the "
+                       "paper: F_a the corrected gradient, then its gradient by least squares with "
+                       "F_a fixed) or joint (both from one least-squares fit of the second-order "
+                       "Taylor expansion: the stress samples exact for quadratic motions at free "
+                       "surfaces and on disordered neighbourhoods too, where the sequential fit's "
+                       "carry a first-order error; docs/theory/gradF-plastic.md §G17)")
+                 .choices({"sequential", "joint"})
+                 .defaultValue("sequential"));
 }
 
 template <int D>
@@ -59,6 +68,7 @@ GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
                                                                            : MoveWeights::nonIncreasing),
       particleVolume_(params.word("sampleVolume") == "particle")
 {
+    jointFit_ = params.word("fit") == "joint";
     // Only samples that carry their elastic state have weights to choose.
     if (!elasticState_ && params.given("moveWeights") && params.word("moveWeights") != "kernel")
     {
@@ -89,6 +99,11 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
     Y_.resize(n);
     maxNeighbours_ = list.maxCount();
     samples_.listChanged();
+    if (jointFit_)
+    {
+        Ainv_.resize(n);
+        firstMoment_.resize(n);
+    }
     long singular = -1;
 #pragma omp parallel for schedule(static) reduction(max : singular) if (useThreads(n))
     for (std::size_t a = 0; a < n; ++a)
@@ -104,6 +119,8 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
         MatM Z = MatM::Zero();
         MonomialVec<D> s = MonomialVec<D>::Zero();
         MatMD Y = MatMD::Zero();
+        Mat<D> Mxx = Mat<D>::Zero(); // fit joint: Σ Ŵ x^r ⊗ x^r
+        Vec<D> moment = Vec<D>::Zero();
         for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
         {
             const Vec<D> xr = ref.x[list.indices[k]] - ref.x[a];
@@ -112,6 +129,19 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
             Z.noalias() += w * z * z.transpose();
             s += w * z;
             Y.noalias() += w * z * xr.transpose();
+            if (jointFit_)
+            {
+                Mxx.noalias() += (w * xr) * xr.transpose();
+                moment += w * xr;
+            }
+        }
+        if (jointFit_)
+        {
+            firstMoment_[a] = moment;
+            if (!invertJointMatrix(Mxx, Y, Z, Ainv_[a]) && ref.counts(a))
+            {
+                singular = std::max<long>(singular, static_cast<long>(n - a));
+            }
         }
         // Z is SPD with at least M non-degenerate neighbours; judge it scale-free.
         const double scale = Z.trace() / M;
@@ -175,6 +205,26 @@ typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vec
     const Vec<D> xa = x[a];
     scratch.xr[0].setZero();
     scratch.w[0] = values.W[0] * ref.V[a] * invDenominator;
+    if (jointFit_)
+    {
+        // (G17.2): R = Σ_b Ŵ_ab x_ba ⊗ p_ab, p_ab = (x^r_ba, z_ab).
+        MatDP R = MatDP::Zero();
+        for (std::size_t j = 1; j < count; ++j)
+        {
+            const std::size_t b = list.indices[first + j];
+            const Vec<D> xr = ref.x[b] - xra;
+            const double w = values.W[j] * ref.V[b] * invDenominator;
+            scratch.xr[j] = xr;
+            scratch.w[j] = w;
+            const Vec<D> wxba = w * (x[b] - xa);
+            R.template leftCols<D>().noalias() += wxba * xr.transpose();
+            R.template rightCols<M>().noalias() += wxba * monomials<D>(xr).transpose();
+        }
+        jointKinematics(R, a, kin);
+        kin.F = kin.f * ref.F[a];
+    }
+    else
+    {
     for (std::size_t j = 1; j < count; ++j)
     {
         const std::size_t b = list.indices[first + j];
@@ -191,6 +241,7 @@ typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vec
     // Least squares for ½H: c_a = [Σ_b Ŵ_ab y_ab z_ab^T] Z_a^{-1}.
     const MatDM c = (Rx - kin.f * Y_[a].transpose()) * Zinv_[a];
     kin.H = hessianFromCoefficients<D>(c);
+    }
     // G[k] = H[k] F^r + f K[k]  (G_ijk = H_imk F^r_mj + f_im K_mjk)
     for (int k = 0; k < D; ++k)
     {
@@ -209,6 +260,10 @@ template <int D>
 Mat<D> GradF<D>::deformationGradient(std::size_t a, const std::vector<Vec<D>>& x,
                                      const ReferenceConfiguration<D>& ref) const
 {
+    if (jointFit_)
+    {
+        return kinematics(a, x, ref).F; // f_a is the joint fit's, with H_a
+    }
     const NeighbourList& list = ref.neighbours;
     Mat<D> moment = Mat<D>::Zero();
     const Vec<D> xa = x[a];
@@ -337,6 +392,19 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                         A.noalias() += Q.slice[dd] * ref.K[a].slice[dd].transpose();
                     }
                 }
+                if (jointFit_)
+                {
+                    // (G17.3): N_a = V0_a [A_a | B~_a] A_a^{-1}.
+                    MatDP E;
+                    E.template leftCols<D>() = A;
+                    E.template rightCols<M>() = contractMonomials<D, MatDM>(B);
+                    const MatDP N = in.V0[a] * (E * Ainv_[a]);
+                    UL_[a] = invDenominator_[a] * N.template leftCols<D>();
+                    Cw_[a] = invDenominator_[a] * N.template rightCols<M>();
+                    selfTerm_[a] = N.template leftCols<D>() * firstMoment_[a] +
+                                   N.template rightCols<M>() * s_[a];
+                    continue;
+                }
                 const MatDM C = contractMonomials<D, MatDM>(B) * Zinv_[a];
                 const Mat<D> Atilde = A - C * Y_[a];
                 UL_[a] = in.V0[a] * Atilde * ref.gradient.L[a];
@@ -350,6 +418,18 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
         {
             Vec<D> sum = Vec<D>::Zero();
             const typename ReferenceConfiguration<D>::PairKernelValues values = ref.kernelValues(c);
+            if (jointFit_)
+            {
+                // (G17.3): p_ac = (x^r_ca, z(x^r_ca)) with x^r_ca = -xr.
+                for (std::size_t k = list.begin(c) + 1, j = 1; k < list.end(c); ++k, ++j)
+                {
+                    const std::size_t a = list.indices[k];
+                    const Vec<D> xr = ref.x[a] - ref.x[c];
+                    sum.noalias() += values.W[j] * (Cw_[a] * monomials<D>(xr) - UL_[a] * xr);
+                }
+                out.T[c] = -ref.V[c] * sum + selfTerm_[c];
+                continue;
+            }
             for (std::size_t k = list.begin(c) + 1, j = 1; k < list.end(c); ++k, ++j)
             {
                 const std::size_t a = list.indices[k];

@@ -31,9 +31,16 @@
 //             through its own F_b, their mean pressure through F_a). Only for the particles of
 //             a material with history (plastic): an elastic body keeps the paper's samples, bit
 //             for bit (§G14: with F-bar the UL twisting column fails)
+// Fit (docs/theory/gradF-plastic.md §G17):
+//   sequential  f_a the corrected gradient, then H_a by least squares with f_a fixed (the paper)
+//   joint       f_a and H_a from one weighted least-squares fit of the second-order Taylor
+//               expansion, [f_a | c_a] = Σ_b Ŵ_ab x_ba ⊗ p_ab A_a⁻¹ (G17.2): the samples exact
+//               for quadratic motions at free surfaces and on disordered clouds too; force
+//               (G17.3), the exact −∂Π/∂x
 // Keys:
 //   plasticSamples | ownHistory | linearised | elasticState | ownHistory
 //   sampleVolume   | own | particle                           | own
+//   fit            | sequential | joint                       | sequential
 
 #include "stabilisation/CsphOperators.hpp"
 #include "stabilisation/gradF/SampleHistory.hpp"
@@ -46,7 +53,10 @@ class GradF : public Stabilisation<D>
 {
 public:
     static constexpr int M = monomialCount<D>;
+    static constexpr int P = D + M; // fit joint: the linear and quadratic unknowns together
     using MatM = Eigen::Matrix<double, M, M>;
+    using MatP = Eigen::Matrix<double, P, P>;
+    using MatDP = Eigen::Matrix<double, D, P>;
     using MatDM = Eigen::Matrix<double, D, M>;
     using MatMD = Eigen::Matrix<double, M, D>;
 
@@ -159,6 +169,13 @@ private:
     // samples' weighted mean pressure Σ_b Ŵ_ab tr(τ̄_b) / D, which acts through F_a (§G13).
     double chainParticleVolume(std::size_t count, Scratch& scratch) const;
 
+    // fit joint: A_a⁻¹ of (G17.2) from the blocks of the sequential fit's sums, made
+    // dimensionless with ℓ_a² = tr(Σ Ŵ x^r ⊗ x^r) / D and inverted as Z_a is; false where A_a
+    // is singular (judged scale-free as Z_a).
+    bool invertJointMatrix(const Mat<D>& Mxx, const MatMD& Y, const MatM& Z, MatP& Ainv) const;
+    // fit joint: f_a and H_a of (G17.2) into kin.
+    void jointKinematics(const MatDP& R, std::size_t a, Kinematics& kin) const;
+
     // The least-squares matrix's smallest eigenvalue, relative to its mean (regularisedInverse).
     static constexpr double smallestEigenvalue = 0.02;
 
@@ -167,10 +184,14 @@ private:
     std::vector<MatM> Zinv_;             // Z_a^{-1}
     std::vector<MonomialVec<D>> s_;      // s_a = Σ_e Ŵ_ae z_ae
     std::vector<MatMD> Y_;               // Y_a = Σ_e Ŵ_ae z_ae ⊗ x^r_ea
+    // fit joint (§G17): A_a⁻¹ of (G17.2) and the linear part of r_a, Σ_e Ŵ_ae x^r_ea.
+    bool jointFit_ = false;
+    std::vector<MatP> Ainv_;
+    std::vector<Vec<D>> firstMoment_;
     std::size_t maxNeighbours_ = 0;
 
     // Per-particle results of the first pass, gathered by the second.
-    std::vector<Mat<D>> UL_;          // V0_a (A_a - C_a Y_a) L_a
+    std::vector<Mat<D>> UL_;          // V0_a (A_a - C_a Y_a) L_a; fit joint: V0_a N_a,f / Σ_e W_ae V^r_e
     std::vector<MatDM> Cw_;           // V0_a C_a / Σ_e W_ae V^r_e
     std::vector<Vec<D>> selfTerm_;    // V0_a C_a s_a
     ChunkCache chunkCache_;

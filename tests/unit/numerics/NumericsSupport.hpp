@@ -313,6 +313,10 @@ std::string schemeText(const std::string& name)
     {
         return "type hourglass; alpha 20;";
     }
+    if (name == "gradF fit joint")
+    {
+        return "type gradF; fit joint;";
+    }
     return "type " + name + ";";
 }
 
