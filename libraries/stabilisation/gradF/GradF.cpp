@@ -103,6 +103,7 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
     {
         Ainv_.resize(n);
         firstMoment_.resize(n);
+        jointComplement_.resize(n);
     }
     long singular = -1;
 #pragma omp parallel for schedule(static) reduction(max : singular) if (useThreads(n))
@@ -138,10 +139,7 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
         if (jointFit_)
         {
             firstMoment_[a] = moment;
-            if (!invertJointMatrix(Mxx, Y, Z, Ainv_[a]) && ref.counts(a))
-            {
-                singular = std::max<long>(singular, static_cast<long>(n - a));
-            }
+            jointComplement_[a] = invertJointMatrix(Mxx, Y, Z, Ainv_[a]);
         }
         // Z is SPD with at least M non-degenerate neighbours; judge it scale-free.
         const double scale = Z.trace() / M;

@@ -169,10 +169,10 @@ private:
     // samples' weighted mean pressure Σ_b Ŵ_ab tr(τ̄_b) / D, which acts through F_a (§G13).
     double chainParticleVolume(std::size_t count, Scratch& scratch) const;
 
-    // fit joint: A_a⁻¹ of (G17.2) from the blocks of the sequential fit's sums, made
-    // dimensionless with ℓ_a² = tr(Σ Ŵ x^r ⊗ x^r) / D and inverted as Z_a is; false where A_a
-    // is singular (judged scale-free as Z_a).
-    bool invertJointMatrix(const Mat<D>& Mxx, const MatMD& Y, const MatM& Z, MatP& Ainv) const;
+    // fit joint: A_a⁻¹ of (G17.2) from the blocks of the sequential fit's sums, regularised as
+    // Z_a's inverse and the corrected gradient are; returns the complement C_a that completes
+    // f_a on a deficient support (zero on a full one; GradFJointFit.cpp).
+    Mat<D> invertJointMatrix(const Mat<D>& Mxx, const MatMD& Y, const MatM& Z, MatP& Ainv) const;
     // fit joint: f_a and H_a of (G17.2) into kin.
     void jointKinematics(const MatDP& R, std::size_t a, Kinematics& kin) const;
 
@@ -188,6 +188,7 @@ private:
     bool jointFit_ = false;
     std::vector<MatP> Ainv_;
     std::vector<Vec<D>> firstMoment_;
+    std::vector<Mat<D>> jointComplement_; // C_a: f_a's part no neighbour sees (deficient supports)
     std::size_t maxNeighbours_ = 0;
 
     // Per-particle results of the first pass, gathered by the second.

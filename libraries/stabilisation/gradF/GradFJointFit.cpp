@@ -5,6 +5,9 @@
 #include "stabilisation/gradF/MonomialTensors.hpp"
 #include "stabilisation/gradF/RegularisedInverse.hpp"
 
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
 #include <cmath>
 
 namespace sph
@@ -15,18 +18,49 @@ namespace sph
 // not explain): with Zs⁻¹ regularised as Z⁻¹ is (its eigenvalues judged against Z's mean, raised
 // to 0.02 of it), c_a = (R_z − R_x Mxx⁻¹ Yᵀ) Zs⁻¹ vanishes for every linear motion and f_a is then
 // exact, whatever the regularisation did; a well-conditioned Zs gives the exact inverse.
+// A singular support (the neighbours span no volume: a particle alone, a chain, a flat layer)
+// is completed as the corrected gradient completes one (CorrectedGradient.hpp): the eigenvalues
+// of Mxx / ℓ² (mean 1, ℓ² = tr Mxx / D) below singularEigenvalue raised to it, and f_a completed
+// with the part of the identity the fit cannot see, C_a = I − Mxx Mxx'⁻¹, so that f_a = I at the
+// reference and for a particle with no neighbour; C_a is constant in a reference period, so the
+// force stays the exact −∂Π/∂x. Only a singular support: raising the eigenvalues to 0.02, as the
+// corrected gradient does, made the Taylor bar fail at 35 µs (§G18: rim particles squeezed along
+// the wall have nearly flat supports, eigenvalues of a few thousandths, whose exact inverse the
+// run needs). Returns C_a (zero for a full support).
 template <int D>
-bool GradF<D>::invertJointMatrix(const Mat<D>& Mxx, const MatMD& Y, const MatM& Z,
-                                 MatP& Ainv) const
+Mat<D> GradF<D>::invertJointMatrix(const Mat<D>& Mxx, const MatMD& Y, const MatM& Z,
+                                   MatP& Ainv) const
 {
+    const double ell2 = Mxx.trace() / D;
     const double scale = Z.trace() / M;
-    const double detMxx = Mxx.determinant();
-    if (!(scale > 0.0) || !(std::abs(detMxx) > 0.0) || !std::isfinite(detMxx))
+    if (!(ell2 > 0.0) || !(scale > 0.0) || !Mxx.allFinite() || !Z.allFinite())
     {
         Ainv.setZero();
-        return false;
+        return Mat<D>::Identity(); // no neighbour: f_a = I, H_a = 0
     }
-    const Mat<D> MxxInv = Mxx.inverse();
+    Mat<D> MxxInv;
+    Mat<D> complement = Mat<D>::Zero();
+    const Eigen::SelfAdjointEigenSolver<Mat<D>> eigen(Mxx / ell2);
+    // Where the corrected gradient reports a singular M (CorrectedGradient.hpp: det below 1e-8).
+    constexpr double singularEigenvalue = 1.0e-8;
+    if (eigen.eigenvalues()[0] >= singularEigenvalue) // ascending
+    {
+        MxxInv = Mxx.inverse();
+    }
+    else
+    {
+        Vec<D> inverse;
+        Vec<D> unseen;
+        for (int i = 0; i < D; ++i)
+        {
+            const double lambda = std::max(eigen.eigenvalues()[i], 0.0);
+            inverse[i] = 1.0 / std::max(lambda, singularEigenvalue);
+            unseen[i] = 1.0 - lambda * inverse[i];
+        }
+        MxxInv = eigen.eigenvectors() * (inverse / ell2).asDiagonal() *
+                 eigen.eigenvectors().transpose();
+        complement = eigen.eigenvectors() * unseen.asDiagonal() * eigen.eigenvectors().transpose();
+    }
     const MatMD YM = Y * MxxInv; // Y Mxx⁻¹
     const MatM Zs = Z - YM * Y.transpose();
     const MatM ZsInv = regularisedInverse(MatM(0.5 * (Zs + Zs.transpose())), scale,
@@ -35,21 +69,20 @@ bool GradF<D>::invertJointMatrix(const Mat<D>& Mxx, const MatMD& Y, const MatM& 
     Ainv.template topRightCorner<D, M>() = -YM.transpose() * ZsInv;
     Ainv.template bottomLeftCorner<M, D>() = -ZsInv * YM;
     Ainv.template bottomRightCorner<M, M>() = ZsInv;
-    const double det = (Zs / scale).determinant();
-    return det > 1.0e-12 && std::isfinite(det);
+    return complement;
 }
 
 template <int D>
 void GradF<D>::jointKinematics(const MatDP& R, std::size_t a, Kinematics& kin) const
 {
     const MatDP fc = R * Ainv_[a];
-    kin.f = fc.template leftCols<D>();
+    kin.f = fc.template leftCols<D>() + jointComplement_[a];
     kin.H = hessianFromCoefficients<D>(MatDM(fc.template rightCols<M>()));
 }
 
-template bool GradF<1>::invertJointMatrix(const Mat<1>&, const MatMD&, const MatM&, MatP&) const;
-template bool GradF<2>::invertJointMatrix(const Mat<2>&, const MatMD&, const MatM&, MatP&) const;
-template bool GradF<3>::invertJointMatrix(const Mat<3>&, const MatMD&, const MatM&, MatP&) const;
+template Mat<1> GradF<1>::invertJointMatrix(const Mat<1>&, const MatMD&, const MatM&, MatP&) const;
+template Mat<2> GradF<2>::invertJointMatrix(const Mat<2>&, const MatMD&, const MatM&, MatP&) const;
+template Mat<3> GradF<3>::invertJointMatrix(const Mat<3>&, const MatMD&, const MatM&, MatP&) const;
 template void GradF<1>::jointKinematics(const MatDP&, std::size_t, Kinematics&) const;
 template void GradF<2>::jointKinematics(const MatDP&, std::size_t, Kinematics&) const;
 template void GradF<3>::jointKinematics(const MatDP&, std::size_t, Kinematics&) const;

@@ -4,8 +4,10 @@
 // regularised corrected gradient. Checked: along the chain f is exact for an affine motion and
 // across it f = I; an isolated particle has f = I and no force; a regular cloud is untouched
 // (no complement); and with a chain hanging off a block, every scheme's force is still
-// −∂Π/∂x and conserves momentum.
+// −∂Π/∂x and conserves momentum. The same for gradF's joint fit, which completes its own f_a
+// (docs/theory/gradF-plastic.md §G17).
 #include "numerics/NumericsSupport.hpp"
+#include "stabilisation/gradF/GradF.hpp"
 
 using namespace sph;
 
@@ -103,7 +105,7 @@ TEST_CASE("a deficient support: forces stay -dPi/dx and conserve momentum in eve
           "[csph][deficientSupport][energy]")
 {
     const auto points = blockWithChain(3, true);
-    for (const std::string name : {"none", "gradF", "hourglass", "vidal"})
+    for (const std::string name : {"none", "gradF", "hourglass", "vidal", "gradF fit joint"})
     {
         INFO(name);
         test::SchemeFixture<2> fixture(points, test::schemeText<2>(name), kHencky, false, 1.4,
@@ -129,4 +131,35 @@ TEST_CASE("a deficient support: forces stay -dPi/dx and conserve momentum in eve
         }
         CHECK(test::largestForceError(fixture, x, T) / maxForce < 1e-6);
     }
+}
+
+TEST_CASE("a deficient support: gradF's joint fit exact along a chain, the identity across it and alone",
+          "[deficientSupport][joint]")
+{
+    const auto points = blockWithChain(4, true);
+    test::SchemeFixture<2> fixture(points, "type gradF; fit joint;", kHencky, false, 1.4,
+                                   "cubicSpline", 1, true);
+    const auto& gradF = dynamic_cast<const GradF<2>&>(*fixture.scheme);
+    const std::size_t tip = 36 + 3;
+    const std::size_t alone = points.size() - 1;
+    for (std::size_t a = 0; a < points.size(); ++a)
+    {
+        INFO("particle " << a);
+        const auto kin = gradF.kinematics(a, points, fixture.ref);
+        CHECK(kin.F.allFinite());
+        CHECK((kin.F - Mat<2>::Identity()).cwiseAbs().maxCoeff() < 1e-12);
+    }
+    Mat<2> A;
+    A << 1.2, 0.3, -0.1, 0.9;
+    std::vector<Vec<2>> x(points.size());
+    for (std::size_t a = 0; a < points.size(); ++a)
+    {
+        x[a] = A * points[a] + Vec<2>(0.4, -0.7);
+    }
+    const Mat<2> f = gradF.kinematics(tip, x, fixture.ref).F;
+    CHECK((f.col(0) - A.col(0)).cwiseAbs().maxCoeff() < 1e-12);
+    CHECK((f.col(1) - Vec<2>(0.0, 1.0)).cwiseAbs().maxCoeff() < 1e-12);
+    CHECK((gradF.kinematics(alone, x, fixture.ref).F - Mat<2>::Identity()).cwiseAbs().maxCoeff() <
+          1e-15);
+    CHECK((gradF.kinematics(14, x, fixture.ref).F - A).cwiseAbs().maxCoeff() < 1e-12);
 }
