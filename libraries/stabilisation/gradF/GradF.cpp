@@ -161,123 +161,6 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
 }
 
 template <int D>
-typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vector<Vec<D>>& x,
-                                                   const ReferenceConfiguration<D>& ref) const
-{
-    Scratch scratch;
-    scratch.resize(ref.neighbours.count(a));
-    return kinematics(a, x, ref, false, scratch);
-}
-
-template <int D>
-typename GradF<D>::Kinematics GradF<D>::kinematics(std::size_t a, const std::vector<Vec<D>>& x,
-                                                   const ReferenceConfiguration<D>& ref,
-                                                   bool atReference, Scratch& scratch) const
-{
-    const NeighbourList& list = ref.neighbours;
-    const std::size_t first = list.begin(a);
-    const std::size_t count = list.count(a);
-    const Vec<D> xra = ref.x[a];
-    const double invDenominator = invDenominator_[a];
-    const typename ReferenceConfiguration<D>::PairKernelValues values = ref.kernelValues(a);
-    Kinematics kin;
-    if (atReference)
-    {
-        for (std::size_t j = 0; j < count; ++j)
-        {
-            const std::size_t b = list.indices[first + j];
-            scratch.xr[j] = ref.x[b] - xra;
-            scratch.w[j] = values.W[j] * ref.V[b] * invDenominator;
-        }
-        kin.f.setIdentity();
-        kin.F = ref.F[a];
-        kin.H = Tensor3<D>::zero();
-        kin.G = ref.K.empty() ? Tensor3<D>::zero() : ref.K[a];
-        return kin;
-    }
-    // One pass over the neighbours for both f_a (spec §2) and the least-squares right-hand
-    // side Σ_b Ŵ_ab y_ab z_ab^T with y_ab = x_ba - f_a x^r_ba, which splits as
-    // Σ_b Ŵ_ab x_ba z_ab^T - f_a Y_a^T (Y_a = Σ_b Ŵ_ab z_ab ⊗ x^r_ba is precomputed).
-    Mat<D> moment = Mat<D>::Zero();
-    MatDM Rx = MatDM::Zero();
-    const Vec<D> xa = x[a];
-    scratch.xr[0].setZero();
-    scratch.w[0] = values.W[0] * ref.V[a] * invDenominator;
-    if (jointFit_)
-    {
-        // (G17.2): R = Σ_b Ŵ_ab x_ba ⊗ p_ab, p_ab = (x^r_ba, z_ab).
-        MatDP R = MatDP::Zero();
-        for (std::size_t j = 1; j < count; ++j)
-        {
-            const std::size_t b = list.indices[first + j];
-            const Vec<D> xr = ref.x[b] - xra;
-            const double w = values.W[j] * ref.V[b] * invDenominator;
-            scratch.xr[j] = xr;
-            scratch.w[j] = w;
-            const Vec<D> wxba = w * (x[b] - xa);
-            R.template leftCols<D>().noalias() += wxba * xr.transpose();
-            R.template rightCols<M>().noalias() += wxba * monomials<D>(xr).transpose();
-        }
-        jointKinematics(R, a, kin);
-        kin.F = kin.f * ref.F[a];
-    }
-    else
-    {
-    for (std::size_t j = 1; j < count; ++j)
-    {
-        const std::size_t b = list.indices[first + j];
-        const Vec<D> xr = ref.x[b] - xra;
-        const double w = values.W[j] * ref.V[b] * invDenominator;
-        scratch.xr[j] = xr;
-        scratch.w[j] = w;
-        const Vec<D> xba = x[b] - xa;
-        moment.noalias() -= (ref.V[b] * values.dWdrOverR[j] * xba) * xr.transpose(); // ∇W_ab = -W'/r x^r_ba
-        Rx.noalias() += (w * xba) * monomials<D>(xr).transpose();
-    }
-    kin.f = ref.gradient.deformation(a, moment);
-    kin.F = kin.f * ref.F[a];
-    // Least squares for ½H: c_a = [Σ_b Ŵ_ab y_ab z_ab^T] Z_a^{-1}.
-    const MatDM c = (Rx - kin.f * Y_[a].transpose()) * Zinv_[a];
-    kin.H = hessianFromCoefficients<D>(c);
-    }
-    // G[k] = H[k] F^r + f K[k]  (G_ijk = H_imk F^r_mj + f_im K_mjk)
-    for (int k = 0; k < D; ++k)
-    {
-        const auto kk = static_cast<std::size_t>(k);
-        kin.G.slice[kk] = kin.H.slice[kk] * ref.F[a];
-        if (!ref.K.empty())
-        {
-            kin.G.slice[kk] += kin.f * ref.K[a].slice[kk];
-        }
-    }
-    return kin;
-}
-
-// The f_a part of kinematics() alone (the same sums in the same order).
-template <int D>
-Mat<D> GradF<D>::deformationGradient(std::size_t a, const std::vector<Vec<D>>& x,
-                                     const ReferenceConfiguration<D>& ref) const
-{
-    if (jointFit_)
-    {
-        return kinematics(a, x, ref).F; // f_a is the joint fit's, with H_a
-    }
-    const NeighbourList& list = ref.neighbours;
-    Mat<D> moment = Mat<D>::Zero();
-    const Vec<D> xa = x[a];
-    const double* dWdrOverR = ref.kernelValues(a).dWdrOverR; // [k - begin] for slot k
-    for (std::size_t k = list.begin(a) + 1; k < list.end(a); ++k)
-    {
-        const std::size_t b = list.indices[k];
-        const Vec<D> xr = ref.x[b] - ref.x[a];
-        const Vec<D> xba = x[b] - xa;
-        moment.noalias() -= (ref.V[b] * dWdrOverR[k - list.begin(a)] * xba) * xr.transpose();
-    }
-    const Mat<D> f = ref.gradient.deformation(a, moment);
-    return f * ref.F[a];
-}
-
-template <int D>
 ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out, bool wantEnergy)
 {
     const ReferenceConfiguration<D>& ref = in.ref;
@@ -392,15 +275,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 }
                 if (jointFit_)
                 {
-                    // (G17.3): N_a = V0_a [A_a | B~_a] A_a^{-1}.
-                    MatDP E;
-                    E.template leftCols<D>() = A;
-                    E.template rightCols<M>() = contractMonomials<D, MatDM>(B);
-                    const MatDP N = in.V0[a] * (E * Ainv_[a]);
-                    UL_[a] = invDenominator_[a] * N.template leftCols<D>();
-                    Cw_[a] = invDenominator_[a] * N.template rightCols<M>();
-                    selfTerm_[a] = N.template leftCols<D>() * firstMoment_[a] +
-                                   N.template rightCols<M>() * s_[a];
+                    jointForceTerms(a, in.V0[a], A, B); // (G17.3)
                     continue;
                 }
                 const MatDM C = contractMonomials<D, MatDM>(B) * Zinv_[a];

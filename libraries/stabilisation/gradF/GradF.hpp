@@ -169,12 +169,17 @@ private:
     // samples' weighted mean pressure Σ_b Ŵ_ab tr(τ̄_b) / D, which acts through F_a (§G13).
     double chainParticleVolume(std::size_t count, Scratch& scratch) const;
 
-    // fit joint: A_a⁻¹ of (G17.2) from the blocks of the sequential fit's sums, regularised as
-    // Z_a's inverse and the corrected gradient are; returns the complement C_a that completes
-    // f_a on a deficient support (zero on a full one; GradFJointFit.cpp).
+    // fit joint (GradFJointFit.cpp): A_a⁻¹ of (G17.2) from the blocks of the sequential fit's
+    // sums, the Schur complement's inverse regularised as Z_a's; returns the complement C_a
+    // that completes f_a on a singular support (zero on any other).
     Mat<D> invertJointMatrix(const Mat<D>& Mxx, const MatMD& Y, const MatM& Z, MatP& Ainv) const;
-    // fit joint: f_a and H_a of (G17.2) into kin.
-    void jointKinematics(const MatDP& R, std::size_t a, Kinematics& kin) const;
+    // fit joint: f_a and H_a of (G17.2) into kin, scratch.xr and scratch.w for b ≠ a.
+    void jointKinematics(std::size_t a, const std::vector<Vec<D>>& x,
+                         const ReferenceConfiguration<D>& ref, Scratch& scratch,
+                         Kinematics& kin) const;
+    // fit joint: particle a's terms of the force (G17.3) into UL_, Cw_ and selfTerm_, from
+    // A_a and B_a of spec §6.4 (the derivatives of Π_a with respect to f_a and H_a).
+    void jointForceTerms(std::size_t a, double V0, const Mat<D>& A, const Tensor3<D>& B);
 
     // The least-squares matrix's smallest eigenvalue, relative to its mean (regularisedInverse).
     static constexpr double smallestEigenvalue = 0.02;
@@ -192,7 +197,9 @@ private:
     std::size_t maxNeighbours_ = 0;
 
     // Per-particle results of the first pass, gathered by the second.
-    std::vector<Mat<D>> UL_;          // V0_a (A_a - C_a Y_a) L_a; fit joint: V0_a N_a,f / Σ_e W_ae V^r_e
+    // fit joint: N_a = V0_a [A_a | B~_a] A_a^{-1} in their place (G17.3): UL_ its first D
+    // columns and Cw_ the rest, both / Σ_e W_ae V^r_e, selfTerm_ N_a r_a.
+    std::vector<Mat<D>> UL_;          // V0_a (A_a - C_a Y_a) L_a
     std::vector<MatDM> Cw_;           // V0_a C_a / Σ_e W_ae V^r_e
     std::vector<Vec<D>> selfTerm_;    // V0_a C_a s_a
     ChunkCache chunkCache_;
