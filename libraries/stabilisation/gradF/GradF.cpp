@@ -94,9 +94,11 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
     const NeighbourList& list = ref.neighbours;
     const std::size_t n = ref.size();
     invDenominator_.resize(n);
-    Zinv_.resize(n);
     s_.resize(n);
-    Y_.resize(n);
+    // Z⁻¹ and Y are the sequential fit's; the joint fit keeps A⁻¹ instead (432 B per particle
+    // in 3D not held).
+    Zinv_.resize(jointFit_ ? 0 : n);
+    Y_.resize(jointFit_ ? 0 : n);
     maxNeighbours_ = list.maxCount();
     samples_.listChanged();
     if (jointFit_)
@@ -148,9 +150,12 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
         {
             singular = std::max<long>(singular, static_cast<long>(n - a));
         }
-        Zinv_[a] = regularisedInverse(Z, scale, smallestEigenvalue);
         s_[a] = s;
-        Y_[a] = Y;
+        if (!jointFit_)
+        {
+            Zinv_[a] = regularisedInverse(Z, scale, smallestEigenvalue);
+            Y_[a] = Y;
+        }
     }
     if (singular < 0)
     {

@@ -186,9 +186,9 @@ private:
 
 
     std::vector<double> invDenominator_; // 1 / Σ_e W_ae V^r_e
-    std::vector<MatM> Zinv_;             // Z_a^{-1}
+    std::vector<MatM> Zinv_;             // Z_a^{-1} (the sequential fit only)
     std::vector<MonomialVec<D>> s_;      // s_a = Σ_e Ŵ_ae z_ae
-    std::vector<MatMD> Y_;               // Y_a = Σ_e Ŵ_ae z_ae ⊗ x^r_ea
+    std::vector<MatMD> Y_;               // Y_a = Σ_e Ŵ_ae z_ae ⊗ x^r_ea (sequential only)
     // fit joint (§G17): A_a⁻¹ of (G17.2) and the linear part of r_a, Σ_e Ŵ_ae x^r_ea.
     bool jointFit_ = false;
     std::vector<MatP> Ainv_;
