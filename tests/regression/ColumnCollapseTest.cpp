@@ -1,10 +1,10 @@
 // The geomaterials/columnCollapse tutorial shortened for CTest: the aluminium-rod column of Bui
-// et al. (2008) at 1 cm spacing (200 particles) for the whole second, total-Lagrangian gradF
-// (the scheme that completes this case today; tutorial README: the scheme table). Measured at
-// this spacing: front 0.41 m, top 0.095 m, largest distance to the measured surface 1.2 cm;
-// the deposit is at rest at the end. The bounds below are the measurement's (run-out
-// 0.442 m, top 0.099 m) widened for the coarse spacing, and catch a collapse that does not
-// happen (front ≈ 0.2 m), runs away (front > 0.6 m) or loses its shape.
+// et al. (2008) at 1 cm spacing (200 particles) for the whole second, with the tutorial's scheme
+// and the others of its README's table. For total-Lagrangian gradF, measured at this spacing:
+// front 0.41 m, top 0.095 m, largest distance to the measured surface 1.2 cm; the deposit is at
+// rest at the end. The bounds below are the measurement's (run-out 0.442 m, top 0.099 m) widened
+// for the coarse spacing, and catch a collapse that does not happen (front ≈ 0.2 m), runs away
+// (front > 0.6 m) or loses its shape.
 #include "support/CaseRunner.hpp"
 
 #include <algorithm>
