@@ -66,9 +66,9 @@ GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
       weights_(!elasticState_ || params.word("moveWeights") == "kernel" ? MoveWeights::kernel
                : params.word("moveWeights") == "conserving"                ? MoveWeights::conserving
                                                                            : MoveWeights::nonIncreasing),
-      particleVolume_(params.word("sampleVolume") == "particle")
+      particleVolume_(params.word("sampleVolume") == "particle"),
+      jointFit_(params.word("fit") == "joint")
 {
-    jointFit_ = params.word("fit") == "joint";
     // Only samples that carry their elastic state have weights to choose.
     if (!elasticState_ && params.given("moveWeights") && params.word("moveWeights") != "kernel")
     {

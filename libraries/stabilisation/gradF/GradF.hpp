@@ -190,7 +190,6 @@ private:
     std::vector<MonomialVec<D>> s_;      // s_a = Σ_e Ŵ_ae z_ae
     std::vector<MatMD> Y_;               // Y_a = Σ_e Ŵ_ae z_ae ⊗ x^r_ea (sequential only)
     // fit joint (§G17): A_a⁻¹ of (G17.2) and the linear part of r_a, Σ_e Ŵ_ae x^r_ea.
-    bool jointFit_ = false;
     std::vector<MatP> Ainv_;
     std::vector<Vec<D>> firstMoment_;
     std::vector<Mat<D>> jointComplement_; // C_a: f_a's part no neighbour sees (deficient supports)
@@ -219,6 +218,7 @@ private:
     MoveWeights weights_ = MoveWeights::kernel;
     bool weightsDue_ = false;
     bool particleVolume_ = false; // sampleVolume particle (§G13)
+    bool jointFit_ = false;       // fit joint (§G17)
     // elasticState: the particles with history, whose K the move sets to zero and whose F^r
     // it sets to the dilation J^(1/D) I (§G4), marked by moveHistory() for the
     // referenceUpdate() that follows it.
