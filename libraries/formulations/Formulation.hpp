@@ -3,6 +3,7 @@
 //
 //   formulation { type totalLagrangian; }
 //   formulation { type updatedLagrangian; referenceUpdateInterval 1; }
+//   formulation { type updatedLagrangian; splitKick yes; }       // no energy from the moves' kicks
 //   formulation { type totalLagrangian; kernelValues recomputed; }   // less memory, more time
 //
 // Total-Lagrangian keeps x^r = X for the whole run (kernel fixed in the initial configuration:
@@ -33,6 +34,10 @@ public:
     virtual bool updatesReference() const = 0;
     // Whether it moves at `step`, last moved at `lastUpdate`.
     virtual bool updateDue(long step, long lastUpdate) const = 0;
+    // Whether the kick at a level where the reference moves is split: the step that ends there
+    // closes with the forces of its own reference, the next opens with the moved one's
+    // (docs/theory/gradF-plastic.md §G20).
+    virtual bool splitsKickAtMoves() const { return false; }
 
     // Whether the kernel values per pair (W and W'/r, 16 B per pair) are recomputed where they
     // are used instead of stored (particles/ReferenceConfiguration.hpp): the same results, bit

@@ -92,6 +92,12 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
     const long firstStep = step_;
     while (true)
     {
+        // The kick split at a move: the closing forces with the reference before it (§G20).
+        kickSplitHere_ = splitKick_ && step_ != firstStep && reference_->moveDue(step_);
+        if (kickSplitHere_)
+        {
+            computeClosingForces();
+        }
         const bool atReference = moveReference(firstStep);
         // The progress line is due by the wall clock, which each rank reads differently; the
         // energy sums it triggers are collective, so the ranks agree first. A stop asked for on
@@ -107,6 +113,10 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         const int stop = static_cast<int>(due[1]);
         const bool wantEnergy = progress || energyWanted(firstStep) || energyBeforeMove_;
         const ForceStatus forces = computeForces(atReference, wantEnergy);
+        if (kickSplitHere_)
+        {
+            keepClosingDifference();
+        }
         levelAtReference_ = atReference;
         levelWantsEnergy_ = wantEnergy;
         if (energyBeforeMove_)
@@ -132,8 +142,14 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         accelerate();
         applyViscosity();
         applyWalls(step.dt);
-        audit_.completeContactWork(particles_.m, contactDeltaV_, acceleration_);
-        audit_.completeDamping(particles_.m, dampingDeltaV_, acceleration_);
+        // The step that ends here closes with a^n_close (v^n): the audit's kicks complete with it.
+        const std::vector<Vec<D>>& closing = kickSplitHere_ ? closingAcceleration() : acceleration_;
+        audit_.completeContactWork(particles_.m, contactDeltaV_, closing);
+        audit_.completeDamping(particles_.m, dampingDeltaV_, closing);
+        if (kickSplitHere_)
+        {
+            integrator_->closeAtLevel(closing);
+        }
         const double dt = last ? 0.0 : step.dt;
         const bool outputDue = last || outputDueNow();
         // The function objects' restart state is that from before they see this level.

@@ -124,6 +124,13 @@ private:
     std::vector<std::string> fieldsAMoveChanges() const; // what ghosts refresh after a move
     ForceStatus computeForces(bool atReference,   // x^n, reference -> T (in acceleration_),
                               bool wantEnergy);   //   F^n, P^n, Π^n
+    ForceStatus internalForces(const ForceInput<D>& in, // scheme + close-pair energy -> T,
+                               std::vector<Vec<D>>& T,  //   F, P in the spare buffers, Π
+                               bool wantEnergy);
+    // The kick split at a move (updatedLagrangian splitKick, gradF-plastic.md §G20):
+    void computeClosingForces();                  // x^n, the reference before the move -> T_close
+    void keepClosingDifference();                 // T_close, the level's T -> T_close - T
+    const std::vector<Vec<D>>& closingAcceleration(); // a^n, T_close - T, m -> a^n_close
     void accelerate();                            // T, m, g, fixed -> a^n (in place)
     void applyWalls(double dt);                            // x^n, v^{n-1/2}, a, Δt_n -> a^n += F_wall/m,
                                                   //   Φ^n, wall loads; W_walls (friction)
@@ -225,6 +232,13 @@ private:
     // before the move of this step, while its change is still to be booked.
     bool moveEnergyWanted_ = false;
     std::optional<double> energyBeforeMove_;
+    // updatedLagrangian's splitKick, and whether this level's kick is split (the reference
+    // moved here): the forces of the reference before the move, as T_close, then T_close - T
+    // (a field, so that a move's regathering carries it with its particle), and a^n_close.
+    bool splitKick_ = false;
+    bool kickSplitHere_ = false;
+    std::vector<Vec<D>> closingForce_;
+    std::vector<Vec<D>> closingAcceleration_;
     // How the level's own forces were evaluated (the probe evaluates them again so).
     bool levelAtReference_ = false;
     bool levelWantsEnergy_ = false;

@@ -15,14 +15,8 @@ ForceStatus Simulation<D>::computeForces(bool atReference, bool wantEnergy)
                      materials_, reference_->reference(), atReference};
     in.owned = distributed() ? &owned_ : nullptr;
     in.globalId = distributed() ? &globalId_ : nullptr;
-    ForceOutput<D> out{acceleration_, nextF_, nextP_};
-    ForceStatus status = scheme_->computeForces(in, out, wantEnergy);
+    ForceStatus status = internalForces(in, acceleration_, wantEnergy);
     checkStatus(status, "computing the internal forces");
-    if (impenetrability_)
-    {
-        status.strainEnergy += impenetrability_->addForces(
-            in.x, in.V0, in.body, in.ref, in.owned, acceleration_, wantEnergy);
-    }
     particles_.F.swap(nextF_);
     particles_.P.swap(nextP_);
     if (distributed())
@@ -35,6 +29,66 @@ ForceStatus Simulation<D>::computeForces(bool atReference, bool wantEnergy)
         }
     }
     return status;
+}
+
+// The internal forces: the scheme's and the close-pair energy's (F and P in nextF_, nextP_).
+template <int D>
+ForceStatus Simulation<D>::internalForces(const ForceInput<D>& in, std::vector<Vec<D>>& T,
+                                          bool wantEnergy)
+{
+    ForceOutput<D> out{T, nextF_, nextP_};
+    ForceStatus status = scheme_->computeForces(in, out, wantEnergy);
+    if (status.ok() && impenetrability_)
+    {
+        status.strainEnergy +=
+            impenetrability_->addForces(in.x, in.V0, in.body, in.ref, in.owned, T, wantEnergy);
+    }
+    return status;
+}
+
+// The forces at x^n of the reference the step that ends here began with (before the move):
+// the step closes with them (gradF-plastic.md §G20). F and P stay the last level's.
+template <int D>
+void Simulation<D>::computeClosingForces()
+{
+    ForceInput<D> in{particles_.x, particles_.V0, particles_.body, particles_.bodies,
+                     materials_, reference_->reference(), false};
+    in.owned = distributed() ? &owned_ : nullptr;
+    in.globalId = distributed() ? &globalId_ : nullptr;
+    closingForce_.resize(particles_.size());
+    checkStatus(internalForces(in, closingForce_, false),
+                "computing the forces of the reference before its move (splitKick)");
+}
+
+// After the level's own forces T (the moved reference's, in acceleration_), T_close - T for the
+// owned particles (a ghost's velocity is its owner's: no closing of its own).
+template <int D>
+void Simulation<D>::keepClosingDifference()
+{
+    const std::size_t n = particles_.size();
+#pragma omp parallel for schedule(static) if (useThreads(n))
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        const bool own = !distributed() || owned_[a];
+        closingForce_[a] = own ? Vec<D>(closingForce_[a] - acceleration_[a]) : Vec<D>::Zero();
+    }
+}
+
+// a^n_close = a^n + (T_close - T)/m: gravity, walls, viscosity and contact do not depend on
+// the reference, so the two accelerations differ by the internal forces alone.
+template <int D>
+const std::vector<Vec<D>>& Simulation<D>::closingAcceleration()
+{
+    const std::size_t n = particles_.size();
+    closingAcceleration_.resize(n);
+#pragma omp parallel for schedule(static) if (useThreads(n))
+    for (std::size_t a = 0; a < n; ++a)
+    {
+        closingAcceleration_[a] = particles_.fixed[a]
+                                      ? Vec<D>::Zero()
+                                      : Vec<D>(acceleration_[a] + closingForce_[a] / particles_.m[a]);
+    }
+    return closingAcceleration_;
 }
 
 // a = T/m + g in place of the forces; fixed particles discard theirs.

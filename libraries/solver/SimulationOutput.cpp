@@ -180,6 +180,14 @@ void Simulation<D>::declareFields()
     f.bind(FieldSpec::tensor("nextDeformationGradient", "F of the force evaluation under way"),
            nextF_, Mat<D>::Identity());
     f.bind(FieldSpec::tensor("nextStress", "P of the force evaluation under way [Pa]"), nextP_);
+    if (splitKick_)
+    {
+        closingForce_.assign(p.size(), Vec<D>::Zero());
+        f.bind(FieldSpec::vector("closingForce", "the forces of the reference before this "
+                                                 "level's move, then their difference from the "
+                                                 "level's (splitKick) [N]"),
+               closingForce_);
+    }
     if (contact_->active())
     {
         f.bind(FieldSpec::vector("contactVelocityChange", "the last contact kick [m/s]"),

@@ -58,6 +58,14 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
     {
         damping_.emplace();
     }
+    splitKick_ = formulation_->splitsKickAtMoves();
+    if (splitKick_ && !integrator_->splitsKicks())
+    {
+        throw InputError(schemes.formulation->find("splitKick")->valueLocation(),
+                         "splitKick needs a time integrator whose kick can be split at a level; '" +
+                             integrator_->typeName() + "' cannot",
+                         {"Use timeIntegration { type leapfrog; } (the default), or splitKick no."});
+    }
 
     setupBodies(dicts.get("bodies"));
     setupWalls();

@@ -18,6 +18,7 @@
 #include <functional>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,19 @@ public:
     // x^{n+1}, and the next step starts from rest there as a run starts (only called when
     // kineticDamping() is true).
     virtual void restAtLevel() {}
+    // Whether the kick at a level can be split in two (closeAtLevel()): updatedLagrangian's
+    // `splitKick` needs it.
+    virtual bool splitsKicks() const { return false; }
+    // The kick split at a move of the reference (docs/theory/gradF-plastic.md §G20): the step
+    // that ended at this level closes with `closingAcceleration` (the forces of the reference
+    // that step began with), so the stored velocity becomes v^n; the next advance() opens from
+    // it with the level's own acceleration (that of the moved reference). Fixed particles' are
+    // zero. Called only where splitsKicks() is true.
+    virtual void closeAtLevel(const std::vector<Vec<D>>& closingAcceleration)
+    {
+        (void)closingAcceleration;
+        throw std::logic_error("this time integrator cannot split its kick at a level");
+    }
     // A few words on the current step for the run log's progress line ("" for none).
     virtual std::string stepNote() const { return ""; }
     // The velocity at the time level, v^n, from the stored velocity and a^n.

@@ -87,6 +87,13 @@ sph_add_solver_run("migrating particles bit-identical on 3 ranks" 3
                    -set endTime=0.01 -set writeInterval=0.0025 -set functions={}
                    -set bodies.plate.initialVelocity.spin.omega=40
                    -set controlDict.maxLoadImbalance=1.01)
+# The same with the kick split at the moves (splitKick, gradF-plastic.md §G20): the closing
+# forces, computed before a move, travel with their particles through the move's repartition.
+sph_add_solver_run("migrating particles with the kick split bit-identical on 3 ranks" 3
+                   ${CMAKE_SOURCE_DIR}/tutorials/hardCases/largeRotation migrating -threads 1
+                   -set endTime=0.01 -set writeInterval=0.0025 -set functions={}
+                   -set bodies.plate.initialVelocity.spin.omega=40
+                   -set controlDict.maxLoadImbalance=1.01 -set formulation.splitKick=yes)
 # On 4 ranks: the copper bar of the impact tutorial with UL gradF, its samples' plastic states
 # migrating with their particles (12 repartitions in 394 steps). On 2 ranks these cases stay
 # balanced (RCB cuts them along a symmetry, so both ranks hold the same load): migration on 2
@@ -214,6 +221,14 @@ sph_add_solver_run("plastic impact UL gradF elasticState conserving weights bit-
                    ${sphImpactUL} -set stabilisation.plasticSamples=elasticState
                    -set stabilisation.moveWeights=conserving
                    -set controlDict.functions.energy.referenceMoves=yes)
+# The kick split at the moves (updatedLagrangian splitKick, gradF-plastic.md §G20): the closing
+# forces with the reference before each move (ghosts read as in any evaluation), their difference
+# from the level's kept per particle.
+sph_add_solver_run("plastic impact UL gradF elasticState split kick bit-identical on 2 ranks" 2
+                   ${sphImpact} bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
+                   ${sphImpactUL} -set stabilisation.plasticSamples=elasticState
+                   -set stabilisation.moveWeights=conserving
+                   -set "formulation={ type updatedLagrangian$<SEMICOLON> referenceUpdateInterval 3$<SEMICOLON> splitKick yes$<SEMICOLON> }")
 # The step from the forces' measured largest frequency (docs/theory/timeStep.md): the probe's
 # perturbed ghosts take their owners' mode, its sums are exact in any order, so every rank takes
 # the serial run's steps.
@@ -242,6 +257,7 @@ foreach(test "plastic impact bit-identical on 2 ranks" "plastic impact bit-ident
              "plastic impact UL gradF per-sample history bit-identical on 3 ranks"
              "plastic impact UL gradF linearised bit-identical on 2 ranks"
              "plastic impact UL gradF elasticState conserving weights bit-identical on 2 ranks"
+             "plastic impact UL gradF elasticState split kick bit-identical on 2 ranks"
              "plastic impact UL gradF elasticState stepBound operator bit-identical on 2 ranks"
              "plastic impact UL gradF elasticState impenetrability bit-identical on 2 ranks"
              "plastic impact UL gradF restart from 2 on 3 ranks bit-identical"

@@ -5,6 +5,8 @@
 //   Δt_n = α h / max_a c(F_a).
 //
 // Symplectic for a constant step, second order, explicit: one force evaluation per step.
+// Split at a level where the reference moves (updatedLagrangian's splitKick, gradF-plastic.md
+// §G20): v^n = v^{n-1/2} + ½Δt_{n-1} a^n_close, then v^{n+1/2} = v^n + ½Δt_n a^n.
 //
 // The step's bound (docs/theory/timeStep.md):
 //   stepBound waveSpeed: Δt_n = courant h / max_a c(F_a) (seed eq. 17, plasticity.md (P2.5)-(P2.7)),
@@ -193,6 +195,27 @@ public:
         {
             vn[i] = v[i] + factor * a[i];
         }
+    }
+
+    bool splitsKicks() const override { return true; }
+
+    // v^n = v^{n-1/2} + ½Δt_{n-1} a_close; the next advance() kicks ½Δt_n from v^n, as at the
+    // start of a run (a level reached at rest, after kinetic damping's reset, has v^n already).
+    void closeAtLevel(const std::vector<Vec<D>>& closing) override
+    {
+        if (!halfStep_)
+        {
+            return;
+        }
+        std::vector<Vec<D>>& v = *v_;
+        const double factor = 0.5 * previousDeltaT_;
+        const std::size_t n = v.size();
+#pragma omp parallel for schedule(static) if (useThreads(n))
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            v[i] += factor * closing[i];
+        }
+        halfStep_ = false;
     }
 
     void advance(double dt, const std::vector<Vec<D>>& a, const std::vector<std::uint8_t>& fixed,

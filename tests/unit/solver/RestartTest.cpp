@@ -198,6 +198,19 @@ TEST_CASE("restart continues bit-identically: 2D plastic impact, gradF elasticSt
                           "stabilisation.moveWeights=conserving"});
 }
 
+// The kick split at the moves (updatedLagrangian splitKick, gradF-plastic.md §G20), the
+// reference moved every third step: the stop at step 60 falls on a move, where the velocity
+// written is v^n, closed with the old reference's forces, and the restart opens from it.
+TEST_CASE("restart continues bit-identically: 2D plastic impact, gradF elasticState with the "
+          "kick split at the moves",
+          "[restart][plasticity][splitKick]")
+{
+    plasticImpactRestart({"-set", "stabilisation.plasticSamples=elasticState", "-set",
+                          "stabilisation.moveWeights=conserving", "-set",
+                          "formulation={ type updatedLagrangian; referenceUpdateInterval 3; "
+                          "splitKick yes; }"});
+}
+
 // The step measured from the operator (docs/theory/timeStep.md): its kept mode (a particle
 // field), margin and last frequency are restart data; the stop at step 60 falls between two
 // probes (every 7 steps), so the restart keeps the step of the probe at 56.
