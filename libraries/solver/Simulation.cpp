@@ -315,10 +315,7 @@ bool Simulation<D>::moveReference(long firstStep)
 template <int D>
 double Simulation<D>::strainEnergyNow()
 {
-    ForceInput<D> in{particles_.x, particles_.V0, particles_.body, particles_.bodies,
-                     materials_, reference_->reference(), false};
-    in.owned = distributed() ? &owned_ : nullptr;
-    in.globalId = distributed() ? &globalId_ : nullptr;
+    const ForceInput<D> in = forceInput(false);
     double energy = scheme_->energy(in);
     if (impenetrability_)
     {

@@ -122,6 +122,7 @@ private:
     bool energyWanted(long firstStep) const;      // the function objects' needs -> bool
     double strainEnergyNow();                     // x^n, the reference as it is -> Π
     std::vector<std::string> fieldsAMoveChanges() const; // what ghosts refresh after a move
+    ForceInput<D> forceInput(bool atReference);   // x^n, the reference -> the scheme's input
     ForceStatus computeForces(bool atReference,   // x^n, reference -> T (in acceleration_),
                               bool wantEnergy);   //   F^n, P^n, Π^n
     ForceStatus internalForces(const ForceInput<D>& in, // scheme + close-pair energy -> T,

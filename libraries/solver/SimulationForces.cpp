@@ -7,14 +7,22 @@
 namespace sph
 {
 
-// F, P and T at x^n, into spare buffers first: a failed evaluation leaves the last good F, P.
+// What the scheme reads at x^n with the reference as it is (atReference: x is the reference).
 template <int D>
-ForceStatus Simulation<D>::computeForces(bool atReference, bool wantEnergy)
+ForceInput<D> Simulation<D>::forceInput(bool atReference)
 {
     ForceInput<D> in{particles_.x, particles_.V0, particles_.body, particles_.bodies,
                      materials_, reference_->reference(), atReference};
     in.owned = distributed() ? &owned_ : nullptr;
     in.globalId = distributed() ? &globalId_ : nullptr;
+    return in;
+}
+
+// F, P and T at x^n, into spare buffers first: a failed evaluation leaves the last good F, P.
+template <int D>
+ForceStatus Simulation<D>::computeForces(bool atReference, bool wantEnergy)
+{
+    const ForceInput<D> in = forceInput(atReference);
     ForceStatus status = internalForces(in, acceleration_, wantEnergy);
     checkStatus(status, "computing the internal forces");
     particles_.F.swap(nextF_);
@@ -51,12 +59,8 @@ ForceStatus Simulation<D>::internalForces(const ForceInput<D>& in, std::vector<V
 template <int D>
 void Simulation<D>::computeClosingForces()
 {
-    ForceInput<D> in{particles_.x, particles_.V0, particles_.body, particles_.bodies,
-                     materials_, reference_->reference(), false};
-    in.owned = distributed() ? &owned_ : nullptr;
-    in.globalId = distributed() ? &globalId_ : nullptr;
     closingForce_.resize(particles_.size());
-    checkStatus(internalForces(in, closingForce_, false),
+    checkStatus(internalForces(forceInput(false), closingForce_, false),
                 "computing the forces of the reference before its move (splitKick)");
 }
 
