@@ -356,6 +356,7 @@ void Simulation<D>::observe(RunLog& log, double dt, double strainEnergy, bool wa
     if (wantEnergy)
     {
         balance = audit_.balance(particles_.m, velocitySync_, strainEnergy, walls_->potential());
+        lastDrift_ = {time_, balance.drift};
     }
     WallLoads<D> walls;
     if (!walls_->empty())

@@ -160,6 +160,7 @@ private:
     [[noreturn]] void failWith(const std::string& diagnosis);
     long crossingParticle() const;
     std::string particleName(std::size_t a) const;
+    std::string energyGrowthNote() const; // a failure after the energy grew: what may feed it
     // The setup's error for a particle whose corrected gradient is singular in the initial
     // configuration (the run cannot start; serially at construction, distributed at the first
     // gathering of each rank's particles).
@@ -263,6 +264,8 @@ private:
     double time_ = 0.0;
     long outputIndex_ = 0;
     LevelView lastGood_{-1, 0.0, false, nullptr}; // the last level that passed every check
+    // The last energy balance's drift and its time (a failure's diagnosis reads it).
+    std::optional<std::pair<double, double>> lastDrift_;
     const std::vector<Vec<D>>* writtenX_ = nullptr; // the positions being written
 
     // Work arrays, allocated once.

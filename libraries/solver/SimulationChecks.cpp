@@ -7,6 +7,7 @@
 #include "core/InputError.hpp"
 #include "particles/Parallel.hpp"
 
+#include <iomanip>
 #include <sstream>
 
 namespace sph
@@ -179,7 +180,31 @@ void Simulation<D>::failWith(const std::string& diagnosis)
                                                "), ") +
                            "the time step is too large (" + step + "), the spacing too coarse "
                            "for the deformation, or the deformation is beyond the material "
-                           "model.");
+                           "model." + energyGrowthNote());
+}
+
+// A run whose energy grew before it failed, with moves of the reference and the kick across
+// them as one: the kicks can have fed it (gradF-plastic.md §G19-§G20). The growth is the fact;
+// the cause is a suggestion, so the note says both.
+template <int D>
+std::string Simulation<D>::energyGrowthNote() const
+{
+    constexpr double noticeable = 0.05; // the smallest growth worth a remark
+    if (!lastDrift_ || !(lastDrift_->second > noticeable) || !formulation_->updatesReference() ||
+        splitKick_)
+    {
+        return "";
+    }
+    std::ostringstream note;
+    const double percent = 100.0 * lastDrift_->second;
+    note << "\nThe energy had grown by " << std::fixed << std::setprecision(percent < 10.0 ? 1 : 0)
+         << percent << " % of the initial by t = " << std::defaultfloat << std::setprecision(6)
+         << lastDrift_->first
+         << " s. With the reference moving, the kicks across its moves can feed it: try "
+            "formulation { type updatedLagrangian; splitKick yes; } (with gradF's "
+            "plasticSamples elasticState, also moveWeights conserving; "
+            "docs/theory/gradF-plastic.md §G20).";
+    return note.str();
 }
 
 template <int D>

@@ -46,3 +46,31 @@ TEST_CASE("an unstable time step stops with a diagnosis and the last good state"
                            &output) == 2);
     CHECK_THAT(output, Catch::Contains("NUMERICAL FAILURE"));
 }
+
+// A run that fails after its energy grew says so, and with the reference moving and the kick
+// across the moves as one it names what can feed the growth (gradF-plastic.md §G19-§G20): the
+// zero-energy slam with gradF's joint fit fails at 37.5 ms after its energy has grown by more
+// than half (measured). A run that fails without such a growth (the Dyka bar above) has no note.
+TEST_CASE("a failure after the energy grew says by how much and what may have fed it",
+          "[failure][splitKick]")
+{
+    test::TempDir dir;
+    const auto caseDir = test::copyTutorial("hardCases/zeroEnergyMode", dir.path());
+    REQUIRE(test::runParticles(caseDir) == 0);
+    std::string output;
+    CHECK(test::runProcess("sphSolid", {"-case", caseDir.string(), "-threads", "1", "-set",
+                                        "writeInterval=1", "-set", "maxSteps=100000", "-set",
+                                        "endTime=0.06", "-set", "stabilisation.fit=joint"},
+                           &output) == 2);
+    CHECK_THAT(output, Catch::Contains("NUMERICAL FAILURE"));
+    CHECK_THAT(output, Catch::Contains("The energy had grown by"));
+    CHECK_THAT(output, Catch::Contains("splitKick yes"));
+
+    std::string bar;
+    const auto barDir = test::copyTutorial("bar1D/dykaBar", dir.path());
+    REQUIRE(test::runParticles(barDir) == 0);
+    CHECK(test::runProcess("sphSolid", {"-case", barDir.string(), "-set", "courant=1.9", "-set",
+                                        "writeInterval=1"},
+                           &bar) == 2);
+    CHECK_THAT(bar, !Catch::Contains("The energy had grown"));
+}
