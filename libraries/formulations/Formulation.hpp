@@ -4,6 +4,7 @@
 //   formulation { type totalLagrangian; }
 //   formulation { type updatedLagrangian; referenceUpdateInterval 1; }
 //   formulation { type updatedLagrangian; splitKick yes; }       // no energy from the moves' kicks
+//   formulation { type updatedLagrangian; referenceUpdateStrain 0.01; } // moves by the motion
 //   formulation { type totalLagrangian; kernelValues recomputed; }   // less memory, more time
 //
 // Total-Lagrangian keeps x^r = X for the whole run (kernel fixed in the initial configuration:
@@ -32,8 +33,12 @@ public:
 
     // Whether the reference configuration ever moves.
     virtual bool updatesReference() const = 0;
-    // Whether it moves at `step`, last moved at `lastUpdate`.
-    virtual bool updateDue(long step, long lastUpdate) const = 0;
+    // Whether it moves at `step`, last moved at `lastUpdate`, the motion since then having
+    // strained the particles by `strainSinceUpdate` at most (strainSinceUpdate()).
+    virtual bool updateDue(long step, long lastUpdate, double strainSinceUpdate) const = 0;
+    // Whether updateDue() reads the strain since the last move (the solver then measures it
+    // at every level: ReferenceManager::measureStrain()).
+    virtual bool movesByStrain() const { return false; }
     // Whether the kick at a level where the reference moves is split: the step that ends there
     // closes with the forces of its own reference, the next opens with the moved one's
     // (docs/theory/gradF-plastic.md §G20).

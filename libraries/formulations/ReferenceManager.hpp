@@ -9,6 +9,7 @@
 #include "particles/Parallel.hpp"
 #include "stabilisation/Stabilisation.hpp"
 
+#include <algorithm>
 #include <functional>
 
 namespace sph
@@ -73,6 +74,10 @@ public:
                         ref_.K);
         }
         scalars.bind("referenceUpdateStep", ref_.updateStep);
+        if (formulation_.movesByStrain())
+        {
+            scalars.bind("referenceStrain", strainSinceMove_);
+        }
         for (const char* name : {"referencePosition", "referenceVolume",
                                  "referenceDeformationGradient", "referenceGradientOfF"})
         {
@@ -99,15 +104,52 @@ public:
         std::function<void()> settled;
     };
 
+    // The moves made by this run (since it started or restarted).
+    long moves() const { return moves_; }
+
     // Whether the reference moves at this step (updateIfDue() will move it).
-    bool moveDue(long step) const { return formulation_.updateDue(step, ref_.updateStep); }
+    bool moveDue(long step) const
+    {
+        return formulation_.updateDue(step, ref_.updateStep, strainSinceMove_);
+    }
+
+    // A new level begins (not the first of a run): the strain measured at the last one is what
+    // decides this one's move. (The first level of a restarted run keeps the value it was
+    // decided with, which the restart restored: its move, if any, was already made.)
+    void beginLevel() { strainSinceMove_ = measuredStrain_; }
+
+    // The strain of the motion since the last move, max_a ‖½(f_aᵀ f_a − I)‖ (Frobenius),
+    // f_a = F_a F^r_a⁻¹, from the level's F (a formulation that moves by strain reads it at the
+    // next level). `owned`: the particles that count (null: all); `maximum`: over the ranks.
+    void measureStrain(const std::vector<Mat<D>>& F, const std::vector<std::uint8_t>* owned,
+                       const std::function<double(double)>& maximum = {})
+    {
+        if (!formulation_.movesByStrain())
+        {
+            return;
+        }
+        const std::size_t n = F.size();
+        double largest = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : largest) if (useThreads(n))
+        for (std::size_t a = 0; a < n; ++a)
+        {
+            if (owned && !(*owned)[a])
+            {
+                continue;
+            }
+            const Mat<D> f = F[a] * ref_.F[a].inverse();
+            const Mat<D> E = 0.5 * (f.transpose() * f - Mat<D>::Identity());
+            largest = std::max(largest, E.norm());
+        }
+        measuredStrain_ = maximum ? maximum(largest) : largest;
+    }
 
     // Moves the reference configuration to the current positions when due. Returns whether it
     // moved; a failure (det F <= 0 at the move) is reported in `status`.
     bool updateIfDue(long step, const ParticleSet<D>& particles, ForceStatus& status,
                      const MoveHooks& hooks = {})
     {
-        if (!formulation_.updateDue(step, ref_.updateStep))
+        if (!moveDue(step))
         {
             return false;
         }
@@ -133,6 +175,7 @@ public:
             ref_.V[a] = particles.V0[a] * ref_.F[a].determinant();
         }
         ref_.updateStep = step;
+        ++moves_;
         if (hooks.settled)
         {
             hooks.settled();
@@ -172,6 +215,10 @@ private:
     ReferenceConfiguration<D> ref_;
     std::vector<Material<D>*> materials_;
     std::vector<std::string> fieldNames_;
+    // The strain that decides this level's move (restart data) and the one measured at it.
+    double strainSinceMove_ = 0.0;
+    double measuredStrain_ = 0.0;
+    long moves_ = 0;
 };
 
 } // namespace sph

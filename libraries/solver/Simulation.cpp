@@ -66,6 +66,12 @@ RunSummary Simulation<D>::run(RunLog& log)
             log.line(line);
         }
     }
+    if (formulation_->movesByStrain())
+    {
+        // How often the motion moved the reference (the schedule is not in steps).
+        log.line("Reference   moved " + std::to_string(reference_->moves()) + " times in " +
+                 std::to_string(step_ - firstStep) + " steps (referenceUpdateStrain)");
+    }
     if (distributed())
     {
         const std::string report = distributionReport(step_ - firstStep);
@@ -92,6 +98,10 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
     const long firstStep = step_;
     while (true)
     {
+        if (step_ != firstStep)
+        {
+            reference_->beginLevel();
+        }
         // The kick split at a move: the closing forces with the reference before it (§G20).
         kickSplitHere_ = splitKick_ && step_ != firstStep && reference_->moveDue(step_);
         if (kickSplitHere_)
@@ -113,6 +123,11 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         const int stop = static_cast<int>(due[1]);
         const bool wantEnergy = progress || energyWanted(firstStep) || energyBeforeMove_;
         const ForceStatus forces = computeForces(atReference, wantEnergy);
+        // The level's strain since the last move (a formulation that moves by strain reads it).
+        reference_->measureStrain(particles_.F, distributed() ? &owned_ : nullptr,
+                                  [this](double local) {
+                                      return distributed() ? comm_.maximum(local) : local;
+                                  });
         if (kickSplitHere_)
         {
             keepClosingDifference();

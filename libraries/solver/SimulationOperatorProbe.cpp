@@ -40,10 +40,12 @@ void Simulation<D>::setupOperatorProbe()
         refuse("the contact between bodies has a stiffness of its own",
                "Use one body, or contact { type none; }.");
     }
-    // updateDue(1, 0): a move is due one step after the last, i.e. before every evaluation
-    // (referenceUpdateInterval 1); with a longer interval the scheme's force acts between moves
-    // and the probe measures a stiffness that is there.
-    const bool movesEveryStep = formulation_->updatesReference() && formulation_->updateDue(1, 0);
+    // updateDue(1, 0, 0): a move is due one step after the last without any strain, i.e.
+    // before every evaluation (referenceUpdateInterval 1); with a longer interval, or moves by
+    // strain, the scheme's force acts between moves and the probe measures a stiffness that is
+    // there.
+    const bool movesEveryStep =
+        formulation_->updatesReference() && formulation_->updateDue(1, 0, 0.0);
     if (scheme_->vanishesAtReference() && movesEveryStep)
     {
         // Measured on the column collapse at 5 mm: 420 000 steps against updatedLagrangian

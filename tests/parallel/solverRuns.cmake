@@ -229,6 +229,12 @@ sph_add_solver_run("plastic impact UL gradF elasticState split kick bit-identica
                    ${sphImpactUL} -set stabilisation.plasticSamples=elasticState
                    -set stabilisation.moveWeights=conserving
                    -set "formulation={ type updatedLagrangian$<SEMICOLON> referenceUpdateInterval 3$<SEMICOLON> splitKick yes$<SEMICOLON> }")
+# Moves by the strain since the last one (referenceUpdateStrain, §G21): the largest strain is a
+# maximum over every rank's owned particles, so every rank moves at the serial run's levels.
+sph_add_solver_run("plastic impact UL gradF elasticState moves by strain bit-identical on 2 ranks" 2
+                   ${sphImpact} bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
+                   ${sphImpactUL} -set stabilisation.plasticSamples=elasticState
+                   -set "formulation={ type updatedLagrangian$<SEMICOLON> referenceUpdateStrain 2e-4$<SEMICOLON> splitKick yes$<SEMICOLON> }")
 # The step from the forces' measured largest frequency (docs/theory/timeStep.md): the probe's
 # perturbed ghosts take their owners' mode, its sums are exact in any order, so every rank takes
 # the serial run's steps.
@@ -258,6 +264,7 @@ foreach(test "plastic impact bit-identical on 2 ranks" "plastic impact bit-ident
              "plastic impact UL gradF linearised bit-identical on 2 ranks"
              "plastic impact UL gradF elasticState conserving weights bit-identical on 2 ranks"
              "plastic impact UL gradF elasticState split kick bit-identical on 2 ranks"
+             "plastic impact UL gradF elasticState moves by strain bit-identical on 2 ranks"
              "plastic impact UL gradF elasticState stepBound operator bit-identical on 2 ranks"
              "plastic impact UL gradF elasticState impenetrability bit-identical on 2 ranks"
              "plastic impact UL gradF restart from 2 on 3 ranks bit-identical"

@@ -54,3 +54,42 @@ TEST_CASE("the slam with conserving moves: the kick split at the moves makes no 
     CHECK(split < 0.01);
     CHECK(splitFifth < 0.01);
 }
+
+namespace
+{
+
+// The moves of the slam to 5 ms at `courant`, the reference moved by strain (§G21).
+long movesByStrain(const std::string& courant)
+{
+    test::TempDir dir;
+    const auto caseDir = test::copyTutorial("hardCases/zeroEnergyMode", dir.path());
+    REQUIRE(test::runParticles(caseDir) == 0);
+    std::string output;
+    REQUIRE(test::runProcess("sphSolid",
+                             {"-case", caseDir.string(), "-threads", "1", "-set", "writeInterval=1",
+                              "-set", "endTime=0.005", "-set", "courant=" + courant, "-set",
+                              "formulation={ type updatedLagrangian; referenceUpdateStrain 0.03; "
+                              "splitKick yes; }"},
+                             &output) == 0);
+    const std::string marker = "Reference   moved ";
+    const auto at = output.find(marker);
+    REQUIRE(at != std::string::npos);
+    return std::stol(output.substr(at + marker.size()));
+}
+
+} // namespace
+
+// A schedule in motion, not in steps: with the step four times smaller the reference moves
+// about as often (measured: 103 and 131 times), where referenceUpdateInterval would move it four
+// times as often, a different discretisation at each step size.
+TEST_CASE("the reference moved by strain moves about as often at any step size",
+          "[moveEnergy][referenceUpdateStrain]")
+{
+    const long coarse = movesByStrain("0.3");
+    const long fine = movesByStrain("0.075");
+    std::cout << "slam to 5 ms, referenceUpdateStrain 0.03: " << coarse << " moves at courant 0.3, "
+              << fine << " at 0.075\n";
+    CHECK(coarse > 20);
+    CHECK(fine < 2 * coarse);
+    CHECK(fine > coarse / 2);
+}

@@ -23,7 +23,7 @@ public:
     }
 
     bool updatesReference() const override { return false; }
-    bool updateDue(long, long) const override { return false; }
+    bool updateDue(long, long, double) const override { return false; }
 };
 
 SPH_REGISTER_DIM_MODEL(Formulation, TotalLagrangian, "totalLagrangian");

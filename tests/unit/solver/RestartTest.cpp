@@ -211,6 +211,17 @@ TEST_CASE("restart continues bit-identically: 2D plastic impact, gradF elasticSt
                           "splitKick yes; }"});
 }
 
+// Moves by the strain since the last one (referenceUpdateStrain, gradF-plastic.md §G21): the
+// strain measured at the stop is restart data, so the restarted run moves at the same levels.
+TEST_CASE("restart continues bit-identically: 2D plastic impact, gradF elasticState moving "
+          "its reference by strain",
+          "[restart][plasticity][referenceUpdateStrain]")
+{
+    plasticImpactRestart({"-set", "stabilisation.plasticSamples=elasticState", "-set",
+                          "formulation={ type updatedLagrangian; referenceUpdateStrain 2e-4; "
+                          "splitKick yes; }"});
+}
+
 // The step measured from the operator (docs/theory/timeStep.md): its kept mode (a particle
 // field), margin and last frequency are restart data; the stop at step 60 falls between two
 // probes (every 7 steps), so the restart keeps the step of the probe at 56.
