@@ -34,7 +34,7 @@ public:
     // Whether the reference configuration ever moves.
     virtual bool updatesReference() const = 0;
     // Whether it moves at `step`, last moved at `lastUpdate`, the motion since then having
-    // strained the particles by `strainSinceUpdate` at most (strainSinceUpdate()).
+    // strained the particles by `strainSinceUpdate` at most (ReferenceManager::measureStrain()).
     virtual bool updateDue(long step, long lastUpdate, double strainSinceUpdate) const = 0;
     // Whether updateDue() reads the strain since the last move (the solver then measures it
     // at every level: ReferenceManager::measureStrain()).

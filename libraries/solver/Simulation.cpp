@@ -98,16 +98,6 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
     const long firstStep = step_;
     while (true)
     {
-        if (step_ != firstStep)
-        {
-            reference_->beginLevel();
-        }
-        // The kick split at a move: the closing forces with the reference before it (§G20).
-        kickSplitHere_ = splitKick_ && step_ != firstStep && reference_->moveDue(step_);
-        if (kickSplitHere_)
-        {
-            computeClosingForces();
-        }
         const bool atReference = moveReference(firstStep);
         // The progress line is due by the wall clock, which each rank reads differently; the
         // energy sums it triggers are collective, so the ranks agree first. A stop asked for on
@@ -123,15 +113,7 @@ void Simulation<D>::advance(RunLog& log, bool restarted)
         const int stop = static_cast<int>(due[1]);
         const bool wantEnergy = progress || energyWanted(firstStep) || energyBeforeMove_;
         const ForceStatus forces = computeForces(atReference, wantEnergy);
-        // The level's strain since the last move (a formulation that moves by strain reads it).
-        reference_->measureStrain(particles_.F, distributed() ? &owned_ : nullptr,
-                                  [this](double local) {
-                                      return distributed() ? comm_.maximum(local) : local;
-                                  });
-        if (kickSplitHere_)
-        {
-            keepClosingDifference();
-        }
+        afterLevelForces();
         levelAtReference_ = atReference;
         levelWantsEnergy_ = wantEnergy;
         if (energyBeforeMove_)
@@ -290,53 +272,6 @@ void Simulation<D>::commitHistory()
     const double dissipated = scheme_->commitHistory(
         {particles_.F, particles_.V0, particles_.bodies, withHistory, distributed() ? &owned_ : nullptr});
     audit_.addDissipation(distributed() ? comm_.sum(dissipated) : dissipated);
-}
-
-// x is the reference configuration bitwise (f = I exactly) when the reference was just moved
-// here, or, at the first level of a run (fresh or restarted), if the arrays say so (an
-// initial displacement makes x differ from X = x^r).
-template <int D>
-bool Simulation<D>::moveReference(long firstStep)
-{
-    ForceStatus status;
-    // Distributed: every rank learns of a failure at the move before going on, and the ghosts'
-    // new reference is their owners' (an outer ghost's own is cut at the layer's edge) before
-    // the corrected gradients are built from it.
-    const typename ReferenceManager<D>::MoveHooks hooks{
-        [this](const ForceStatus& moveStatus) {
-            checkStatus(moveStatus, "moving the reference configuration");
-        },
-        [this] { refreshGhosts(fieldsAMoveChanges()); }};
-    // Π at these positions with the reference before the move, against Π with the moved one
-    // from the force evaluation that follows (§G6).
-    const std::optional<double> before =
-        moveEnergyWanted_ && reference_->moveDue(step_) ? std::optional<double>(strainEnergyNow())
-                                                        : std::nullopt;
-    const bool moved = distributed() ? reference_->updateIfDue(step_, particles_, status, hooks)
-                                     : reference_->updateIfDue(step_, particles_, status);
-    checkStatus(status, "moving the reference configuration");
-    if (moved)
-    {
-        energyBeforeMove_ = before;
-    }
-    if (moved && distributed() && regatherDue())
-    {
-        regather();
-    }
-    const ReferenceConfiguration<D>& ref = reference_->reference();
-    return moved || (step_ == firstStep && ref.updateStep == step_ && ref.x == particles_.x);
-}
-
-template <int D>
-double Simulation<D>::strainEnergyNow()
-{
-    const ForceInput<D> in = forceInput(false);
-    double energy = scheme_->energy(in);
-    if (impenetrability_)
-    {
-        energy += impenetrability_->energy(in.x, in.V0, in.body, in.ref, in.owned);
-    }
-    return distributed() ? comm_.sum(energy) : energy;
 }
 
 template <int D>

@@ -103,7 +103,8 @@ private:
     using FunctionState = std::map<std::string, double>; // "fo:<name>:<key>" -> value
 
     // Simulation.cpp: the time loop and its phases (reads -> writes); the forces of a level in
-    // SimulationForces.cpp, the motion of a step (drift to checkOrder) in SimulationMotion.cpp
+    // SimulationForces.cpp, the moves of the reference in SimulationMoves.cpp, the motion of a
+    // step (drift to checkOrder) in SimulationMotion.cpp
     void advance(RunLog& log, bool restarted);
     // This rank's request to stop (StopCode: a signal's number, writeNow, none); rank 0 reads
     // controlDict again when it changed.
@@ -118,8 +119,9 @@ private:
     };
     Step stepToTake() const;
     bool outputDueNow() const; // the VTK output is due at this level
-    bool moveReference(long firstStep);           // x^n -> the reference configuration
     bool energyWanted(long firstStep) const;      // the function objects' needs -> bool
+    // SimulationMoves.cpp: the reference's part of a level (and the split kick's, below)
+    bool moveReference(long firstStep);           // x^n -> the reference configuration
     double strainEnergyNow();                     // x^n, the reference as it is -> Π
     std::vector<std::string> fieldsAMoveChanges() const; // what ghosts refresh after a move
     ForceInput<D> forceInput(bool atReference);   // x^n, the reference -> the scheme's input
@@ -131,6 +133,7 @@ private:
     // The kick split at a move (updatedLagrangian splitKick, gradF-plastic.md §G20):
     void computeClosingForces();                  // x^n, the reference before the move -> T_close
     void keepClosingDifference();                 // T_close, the level's T -> T_close - T
+    void afterLevelForces();                      // F^n -> the strain since the move; T_close - T
     const std::vector<Vec<D>>& closingAcceleration(); // a^n, T_close - T, m -> a^n_close
     void accelerate();                            // T, m, g, fixed -> a^n (in place)
     void applyWalls(double dt);                            // x^n, v^{n-1/2}, a, Δt_n -> a^n += F_wall/m,

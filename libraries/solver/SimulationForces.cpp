@@ -54,47 +54,6 @@ ForceStatus Simulation<D>::internalForces(const ForceInput<D>& in, std::vector<V
     return status;
 }
 
-// The forces at x^n of the reference the step that ends here began with (before the move):
-// the step closes with them (gradF-plastic.md §G20). F and P stay the last level's.
-template <int D>
-void Simulation<D>::computeClosingForces()
-{
-    closingForce_.resize(particles_.size());
-    checkStatus(internalForces(forceInput(false), closingForce_, false),
-                "computing the forces of the reference before its move (splitKick)");
-}
-
-// After the level's own forces T (the moved reference's, in acceleration_), T_close - T for the
-// owned particles (a ghost's velocity is its owner's: no closing of its own).
-template <int D>
-void Simulation<D>::keepClosingDifference()
-{
-    const std::size_t n = particles_.size();
-#pragma omp parallel for schedule(static) if (useThreads(n))
-    for (std::size_t a = 0; a < n; ++a)
-    {
-        const bool own = !distributed() || owned_[a];
-        closingForce_[a] = own ? Vec<D>(closingForce_[a] - acceleration_[a]) : Vec<D>::Zero();
-    }
-}
-
-// a^n_close = a^n + (T_close - T)/m: gravity, walls, viscosity and contact do not depend on
-// the reference, so the two accelerations differ by the internal forces alone.
-template <int D>
-const std::vector<Vec<D>>& Simulation<D>::closingAcceleration()
-{
-    const std::size_t n = particles_.size();
-    closingAcceleration_.resize(n);
-#pragma omp parallel for schedule(static) if (useThreads(n))
-    for (std::size_t a = 0; a < n; ++a)
-    {
-        closingAcceleration_[a] = particles_.fixed[a]
-                                      ? Vec<D>::Zero()
-                                      : Vec<D>(acceleration_[a] + closingForce_[a] / particles_.m[a]);
-    }
-    return closingAcceleration_;
-}
-
 // a = T/m + g in place of the forces; fixed particles discard theirs.
 template <int D>
 void Simulation<D>::accelerate()
