@@ -29,7 +29,8 @@ public:
     static std::string description()
     {
         return "Updated-Lagrangian CSPH: the reference configuration moves to the current one "
-               "every referenceUpdateInterval steps (spec §4).";
+               "every referenceUpdateInterval steps, or when the strain since the last move "
+               "reaches referenceUpdateStrain (spec §4).";
     }
     static Schema schema()
     {
@@ -41,7 +42,8 @@ public:
                                 .defaultValue("1"))
             .add(Key::real("referenceUpdateStrain",
                            "move the reference when the largest strain of the motion since the "
-                           "last move, max |(f^T f - I)/2| over the particles (f = F F^r^-1), "
+                           "last move, max |(f^T f - I)/2| over the particles (Frobenius norm, "
+                           "f = F F^r^-1), "
                            "reaches this: moves follow the motion, not the step count "
                            "(docs/theory/gradF-plastic.md §G21)")
                      .range(0.0, 1.0, false, true)
