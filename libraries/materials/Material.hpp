@@ -175,6 +175,17 @@ public:
             rebaseHistory(states + j * stride, from[j], to);
         }
     }
+    // Whether a point with the packed state `packed` at the gradient F has opened: it is
+    // beyond a tension cut-off of zero, so that it carries no stress and holds no energy (a
+    // cohesionless granular point whose voids are open, docs/theory/plasticity.md (P9.5));
+    // what gradF's openedSamples particle acts on (docs/theory/gradF-plastic.md §G22). By
+    // default never.
+    virtual bool opened(const double* packed, const Mat<D>& F) const
+    {
+        (void)packed;
+        (void)F;
+        return false;
+    }
     // The same for particle a's own committed state (its be at `to` is the one it had at
     // `from`).
     virtual void rebaseParticleHistory(std::size_t a, const Mat<D>& from, const Mat<D>& to)

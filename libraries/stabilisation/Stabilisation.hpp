@@ -207,6 +207,15 @@ public:
         (void)materials;
     }
 
+    // The energy the last moveHistory() dissipated, over the particles `owned` names (null:
+    // all): gradF's openedSamples particle (docs/theory/gradF-plastic.md (G22.2)). By default
+    // none.
+    virtual double moveDissipation(const std::vector<std::uint8_t>* owned) const
+    {
+        (void)owned;
+        return 0.0;
+    }
+
     // Whether moveHistory() changes the materials' own (per-particle) history.
     virtual bool movesParticleHistory() const { return false; }
 

@@ -288,6 +288,16 @@ sph_add_solver_run("geomaterial column collapse bit-identical on 2 ranks" 2
                    -set functions.surface.writeInterval=0.02 -set functions.particles.writeInterval=0.02)
 set_property(TEST "parallel:sphSolid geomaterial column collapse bit-identical on 2 ranks"
              APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy walls")
+# The same with the samples of opened particles taking their state at each move
+# (openedSamples particle, gradF-plastic.md §G22): an owned particle's samples of a ghost take
+# the ghost's state, which the ghost computes from its own (inner) neighbourhood.
+sph_add_solver_run("geomaterial column collapse openedSamples bit-identical on 2 ranks" 2
+                   ${CMAKE_SOURCE_DIR}/tutorials/geomaterials/columnCollapse bitIdentical -threads 1
+                   -set endTime=0.06 -set writeInterval=0.03
+                   -set functions.surface.writeInterval=0.03 -set functions.particles.writeInterval=0.03
+                   -set stabilisation.openedSamples=particle)
+set_property(TEST "parallel:sphSolid geomaterial column collapse openedSamples bit-identical on 2 ranks"
+             APPEND PROPERTY ENVIRONMENT "SPH_ROUNDOFF_TABLES=energy walls")
 # The same with total-Lagrangian gradF (per-sample history since t = 0).
 sph_add_solver_run("geomaterial column collapse TL gradF bit-identical on 2 ranks" 2
                    ${CMAKE_SOURCE_DIR}/tutorials/geomaterials/columnCollapse bitIdentical -threads 1

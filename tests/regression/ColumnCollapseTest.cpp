@@ -119,12 +119,15 @@ TEST_CASE("column collapse, coarse: UL gradF elasticState completes, near the me
 
 // The tutorial's scheme with the reference moved at every step (its default until 2026-11-27:
 // UL gradF elasticState, the moves' energy weights that keep Π, the close-pair energy):
-// completes near the measured surface with every pair apart, and the moves raise the energy 300
-// times less than with the kernel's weights. Measured at 10 mm: largest distance 1.14 cm,
-// closest pair 0.49; the moves' rises 5.9e-4 J/m of the 7.6 J/m gravity does (7.7e-5; the
+// completes near the measured surface with every pair apart, and the moves raise the energy 70
+// times less than with the kernel's weights. Measured at 10 mm: largest distance 1.82 cm,
+// closest pair 0.49; the moves' rises 2.6e-3 J/m of the 7.7 J/m gravity does (3.4e-4; the
 // kernel's weights: 0.19 J/m, 2.5e-2). Not round-off, as on the metal impact: where a
 // particle's new support cannot reach the old energy the weights are widened and the residual
-// is what is left (docs/theory/gradF-plastic.md §G9).
+// is what is left (docs/theory/gradF-plastic.md §G9). (Before 2026-11-28 1.14 cm and 5.9e-4
+// J/m: the weights of opened particles, whose samples hold only round-off, were then chosen by
+// the round-off, (G22.3); the distance's bound is the TL test's, one column of the loose slope
+// deciding it at this spacing, results.md §5.)
 TEST_CASE("column collapse, coarse: UL gradF conserving, moved every step, keeps pairs apart, moves small",
           "[geomaterials][columnCollapse][gradF]")
 {
@@ -132,7 +135,7 @@ TEST_CASE("column collapse, coarse: UL gradF conserving, moved every step, keeps
     const auto caseDir =
         runCoarseCollapse(dir, {"-set", "formulation.referenceUpdateInterval=1", "-set",
                                 "controlDict.functions.energy.referenceMoves=yes"});
-    checkConservingDeposit(caseDir, 0.015, 2e-4);
+    checkConservingDeposit(caseDir, 0.02, 5e-4);
 }
 
 // The tutorial as it is (system/sphSchemes: the same scheme, the reference moved every fifth
@@ -148,6 +151,37 @@ TEST_CASE("column collapse, coarse: the tutorial's scheme, moved every fifth ste
     const auto caseDir =
         runCoarseCollapse(dir, {"-set", "controlDict.functions.energy.referenceMoves=yes"});
     checkConservingDeposit(caseDir, 0.02, 1e-3);
+}
+
+// The tutorial's scheme with the samples of opened particles taking their state at each move
+// (openedSamples particle, docs/theory/gradF-plastic.md §G22). Measured at 10 mm: largest
+// distance 0.98 cm (the scheme without the rule: 1.20), closest pair 0.49; the moves change Π
+// only by what they book as dissipated, so their rises are round-off (8.7e-13 J/m of the 7.7
+// J/m gravity does), and the booked dissipation is real (the rule acted). The audit's error at
+// 1 s is +0.25 J/m (3.3 %; without the rule −3.4e-3): energy the steps between the moves make
+// with the rule, not the moves (open, §G22; `splitKick yes` takes it to +0.083 J/m). The bound
+// is there so that a larger gain fails.
+TEST_CASE("column collapse, coarse: the samples of opened particles take their state, the moves "
+          "book what they dissipate",
+          "[geomaterials][columnCollapse][gradF][opened]")
+{
+    test::TempDir dir;
+    const auto caseDir =
+        runCoarseCollapse(dir, {"-set", "controlDict.functions.energy.referenceMoves=yes", "-set",
+                                "stabilisation.openedSamples=particle"});
+    const double distance = test::summaryValue(caseDir, "functions/surface/largestDistance");
+    const double pair = test::summaryValue(caseDir, "functions/stability/minDistanceRatio");
+    INFO("largest distance " << distance << " m, closest pair " << pair);
+    CHECK(distance < 0.015);
+    CHECK(pair > 0.4);
+    const auto energy = test::readTable(caseDir / "postProcessing" / "energy" / "energy.dat");
+    const double gravity = energy.column("external").back();
+    INFO("moves' rises " << energy.column("moveEnergyGain").back() << " J/m, audit error "
+                         << energy.column("total").back() - energy.column("total").front()
+                         << " J/m of " << gravity);
+    CHECK(energy.column("moveEnergyGain").back() < 1e-10 * gravity);
+    CHECK(std::abs(energy.column("total").back() - energy.column("total").front()) <
+          0.05 * gravity);
 }
 
 // The 3D slab of geomaterials/columnCollapse3D (10 mm, 2 000 particles, between frictionless

@@ -136,6 +136,23 @@ public:
     double dissipated(double V0, const Flow& flow) const { return V0 * flow.dissipation; }
 
     double apexPressure() const { return apexPressure_; }
+    // Opened (Material::opened): without a tension cut-off (σt = 0) a point whose
+    // εv = ½ ln det be > 0 has open voids, p = 0, and (returned) sits at the cone's apex.
+    bool opened(const double* packed, const Mat<D>& F) const override
+    {
+        if (tensileStrength_ != 0.0)
+        {
+            return false;
+        }
+        const auto state = PlasticState<D>::unpack(packed);
+        const double J = F.determinant();
+        double detBe = J * J * state.inversePlastic.determinant();
+        if constexpr (D == 2)
+        {
+            detBe *= state.inversePlasticZZ;
+        }
+        return detBe > 1.0;
+    }
     // Jaky's K0 = 1 − sin φ for a frictional material at rest (§P10).
     double atRestCoefficient() const override { return atRest_; }
 

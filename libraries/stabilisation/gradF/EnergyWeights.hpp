@@ -26,10 +26,12 @@ struct EnergyWeightsResult
 };
 
 // kernel: Ŵ (Σ = 1, ≥ 0), energy: W_b, target: E; the weights into omega (may alias nothing).
-// With nonIncreasing, only an energy above E is corrected (ω = Ŵ where Σ Ŵ W ≤ E).
+// With nonIncreasing, only an energy above E is corrected (ω = Ŵ where Σ Ŵ W ≤ E). resolution:
+// the smallest energy density the material resolves (a strain of one ulp, §G22): a difference
+// below it is no energy to keep, and the kernel's weights are kept.
 inline EnergyWeightsResult chooseEnergyWeights(const double* kernel, const double* energy,
                                                std::size_t count, double target, bool nonIncreasing,
-                                               double* omega)
+                                               double* omega, double resolution = 0.0)
 {
     EnergyWeightsResult result;
     // Energies relative to the kernel's mean, for the exponentials' range.
@@ -48,8 +50,9 @@ inline EnergyWeightsResult chooseEnergyWeights(const double* kernel, const doubl
     }
     const double goal = target - mean;
     // Round-off of the sums: a few ulps of the energies' magnitude.
-    const double tolerance = 8.0 * std::numeric_limits<double>::epsilon() *
-                             (std::abs(mean) + spread + std::abs(target));
+    const double tolerance = std::max(8.0 * std::numeric_limits<double>::epsilon() *
+                                          (std::abs(mean) + spread + std::abs(target)),
+                                      resolution);
     // The sums' arithmetic is spelt out (w u once, its square's sum fused): the digits then do
     // not depend on how the compiler contracts the loop. At λ = 0 (the first pass of every move)
     // exp(−0 u) = 1 exactly for finite u, so no exp is needed.

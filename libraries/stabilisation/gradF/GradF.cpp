@@ -39,6 +39,15 @@ Schema GradF<D>::schema()
                        "docs/theory/gradF-plastic.md §G9")
                  .choices({"kernel", "conserving", "nonIncreasing"})
                  .defaultValue("kernel"))
+        .add(Key::word("openedSamples",
+                       "plasticSamples elasticState: the samples of a particle whose material has "
+                       "opened (a cohesionless druckerPrager beyond its tension cut-off: no "
+                       "stress, no energy): own (each keeps its own state, as every sample) or "
+                       "particle (at each reference move they take that particle's state, so "
+                       "that no sample bridges opened material; the energy their states held is "
+                       "booked as dissipated; docs/theory/gradF-plastic.md §G22)")
+                 .choices({"own", "particle"})
+                 .defaultValue("own"))
         .add(Key::word("sampleVolume",
                        "the volume change of the stress samples: own (each sample's det F_b(a), "
                        "as the paper) or particle (every sample of a particle takes the "
@@ -66,6 +75,7 @@ GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
       weights_(!elasticState_ || params.word("moveWeights") == "kernel" ? MoveWeights::kernel
                : params.word("moveWeights") == "conserving"                ? MoveWeights::conserving
                                                                            : MoveWeights::nonIncreasing),
+      openedFromParticle_(params.word("openedSamples") == "particle"),
       particleVolume_(params.word("sampleVolume") == "particle"),
       jointFit_(params.word("fit") == "joint")
 {
@@ -77,6 +87,17 @@ GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
                         " chooses the energy weights of samples that carry their elastic state, "
                         "but plasticSamples is " + params.word("plasticSamples"),
                     {"hint: add 'plasticSamples elasticState;' or remove moveWeights"});
+    }
+    // The rule acts at the moves of samples that carry their elastic state (§G22).
+    if (!elasticState_ && openedFromParticle_)
+    {
+        params.fail("openedSamples",
+                    "openedSamples particle gives the samples of an opened particle its state "
+                    "at each reference move, which only samples that carry their elastic state "
+                    "across the moves have, but plasticSamples is " +
+                        params.word("plasticSamples"),
+                    {"hint: add 'plasticSamples elasticState;' (with formulation "
+                     "updatedLagrangian) or remove openedSamples"});
     }
     // In 1D F̄_b(a) = (J_a / F_b) F_b = F_a for every sample: nothing of gradF would be left.
     if (D == 1 && particleVolume_)

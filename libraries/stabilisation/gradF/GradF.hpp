@@ -104,6 +104,7 @@ public:
         dissipationAside_.swap(sampleDissipation_);
     }
     bool movesParticleHistory() const override { return elasticState_; }
+    double moveDissipation(const std::vector<std::uint8_t>* owned) const override;
     std::string nextToTry(bool updated, bool plastic) const override
     {
         if (updated && plastic && !elasticState_)
@@ -216,6 +217,13 @@ private:
         nonIncreasing
     };
     MoveWeights weights_ = MoveWeights::kernel;
+    // openedSamples particle (§G22): at a move the samples of an opened particle take its
+    // state; V0_a Σ_b ω_ab (W_old − W_new) of each particle a's samples at the last move.
+    bool openedFromParticle_ = false;
+    std::vector<double> openingDissipation_;
+    void takeOpenedStates(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
+                          const std::vector<int>& body,
+                          const std::vector<Material<D>*>& materials);
     bool weightsDue_ = false;
     bool particleVolume_ = false; // sampleVolume particle (§G13)
     bool jointFit_ = false;       // fit joint (§G17)

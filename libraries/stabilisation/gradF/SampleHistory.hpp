@@ -232,6 +232,17 @@ public:
         }
     }
 
+    // The committed state of slot k (which has a record: storeEveryState()) set to `packed`
+    // (gradF's openedSamples particle at a move, §G22).
+    void setState(std::size_t k, const double* packed)
+    {
+        if (!isRecord(slot_[k]))
+        {
+            throw std::logic_error("SampleHistory: setState() of a state without a record");
+        }
+        compact(packed, pool_.at(slot_[k]));
+    }
+
     // Energy weights (weighted() only): of slot k; and the samples particle a lost at the last
     // follow(): count, their weights and their states (stride() numbers each).
     double& weight(std::size_t k) { return weights_[k]; }
@@ -309,8 +320,10 @@ public:
         current_ = false;
     }
 
-private:
+    // The longest packed state a material may have (a caller's buffer for one).
     static constexpr std::size_t maxStride = 16;
+
+private:
     // follow() relocates the records once more than 1/relocateAfter of them were handed out
     // since they were last in order (the cost of a relocation is one pass over the records).
     static constexpr std::size_t relocateAfter = 8;

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -114,6 +115,36 @@ TEST_CASE("energy weights are the kernel's where no correction is needed", "[gra
                                                       3.5, false, omega.data());
     CHECK(omega == s.kernel);
     CHECK(r.residual == Approx(-0.5));
+}
+
+// (G22.3): samples that hold nothing but round-off (opened ones at the cone's apex: W = 0 or
+// 1e-48) have no energy to keep. Without a resolution the iteration puts every weight on the
+// sample with the largest round-off; with the material's, E ε², the kernel's weights stay.
+TEST_CASE("energy weights keep the kernel's below the energies' resolution (G22.3)",
+          "[gradF][moveWeights]")
+{
+    const Samples s = randomSamples(5, 9);
+    std::vector<double> roundOff(s.kernel.size(), 0.0);
+    roundOff[4] = 1.36e-48;
+    const double target = 1.5e-49;
+    std::vector<double> omega(s.kernel.size());
+    chooseEnergyWeights(s.kernel.data(), roundOff.data(), roundOff.size(), target, false,
+                        omega.data());
+    CHECK(omega != s.kernel); // the check has teeth: round-off chose the weights
+    const double epsilon = std::numeric_limits<double>::epsilon();
+    const EnergyWeightsResult r = chooseEnergyWeights(s.kernel.data(), roundOff.data(),
+                                                      roundOff.size(), target, false, omega.data(),
+                                                      2.5 * epsilon * epsilon);
+    CHECK(omega == s.kernel);
+    CHECK(r.reached);
+    // Above the resolution nothing changes: the weights of a real energy are the same digits.
+    std::vector<double> withResolution(s.kernel.size());
+    const double mean = weighted(s.kernel, s.energy);
+    chooseEnergyWeights(s.kernel.data(), s.energy.data(), s.kernel.size(), 0.8 * mean, false,
+                        omega.data());
+    chooseEnergyWeights(s.kernel.data(), s.energy.data(), s.kernel.size(), 0.8 * mean, false,
+                        withResolution.data(), 2.5 * epsilon * epsilon);
+    CHECK(withResolution == omega);
 }
 
 TEST_CASE("energy weights are the nearest to the kernel's in relative entropy (G9.2)",

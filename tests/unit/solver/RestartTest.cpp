@@ -222,6 +222,44 @@ TEST_CASE("restart continues bit-identically: 2D plastic impact, gradF elasticSt
                           "splitKick yes; }"});
 }
 
+// The samples of opened particles given their state at each move (openedSamples particle,
+// gradF-plastic.md §G22), on the column collapse as the tutorial sets it up (a cohesionless
+// druckerPrager, whose front opens): the reset samples and the dissipation the moves booked
+// continue bit for bit; and the rule acted (the same run without it ends elsewhere).
+TEST_CASE("restart continues bit-identically: the column collapse with the samples of opened "
+          "particles taking their state",
+          "[restart][plasticity][opened]")
+{
+    test::TempDir one;
+    test::TempDir two;
+    test::TempDir three;
+    const auto whole = test::copyTutorial("geomaterials/columnCollapse", one.path());
+    const auto split = test::copyTutorial("geomaterials/columnCollapse", two.path());
+    const auto without = test::copyTutorial("geomaterials/columnCollapse", three.path());
+    const std::vector<std::string> common{"-threads", "1", "-set", "endTime=0.06", "-set",
+                                          "writeInterval=0.02", "-set", "functions={ energy { type "
+                                          "energy; writeInterval 1e-3; referenceMoves yes; } }"};
+    auto rule = common;
+    rule.insert(rule.end(), {"-set", "stabilisation.openedSamples=particle"});
+    for (const auto& dir : {whole, split, without})
+    {
+        REQUIRE(test::runParticles(dir) == 0);
+    }
+    REQUIRE(test::runSolver(whole, rule) == 0);
+    REQUIRE(test::runSolver(without, common) == 0);
+    auto first = rule;
+    first.insert(first.end(), {"-set", "controlDict.maxSteps=352"}); // between two moves
+    REQUIRE(test::runSolver(split, first) == 0);
+    auto second = rule;
+    second.insert(second.end(), {"-set", "controlDict.startFrom=latestTime"});
+    REQUIRE(test::runSolver(split, second) == 0);
+    const VtuData last = test::lastOutput(whole);
+    test::requireIdenticalState(last, test::lastOutput(split));
+    CHECK(test::fileText(whole / "postProcessing" / "energy" / "energy.dat") ==
+          test::fileText(split / "postProcessing" / "energy" / "energy.dat"));
+    CHECK(last.points != test::lastOutput(without).points);
+}
+
 // The step measured from the operator (docs/theory/timeStep.md): its kept mode (a particle
 // field), margin and last frequency are restart data; the stop at step 60 falls between two
 // probes (every 7 steps), so the restart keeps the step of the probe at 56.
