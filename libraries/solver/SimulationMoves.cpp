@@ -47,11 +47,15 @@ bool Simulation<D>::moveReference(long firstStep)
     if (moved)
     {
         // What the move dissipated (gradF's openedSamples particle, gradF-plastic.md (G22.2))
-        // is booked as such, and the move's change of Π is measured net of it.
-        const std::vector<std::uint8_t>* owned = distributed() ? &owned_ : nullptr;
-        const double local = scheme_->moveDissipation(owned);
-        const double dissipated = distributed() ? comm_.sum(local) : local;
-        audit_.addDissipation(dissipated);
+        // is booked as such, and the move's change of Π is measured net of it (the reduction
+        // only where the scheme can dissipate at a move).
+        double dissipated = 0.0;
+        if (scheme_->movesDissipate())
+        {
+            const double local = scheme_->moveDissipation(distributed() ? &owned_ : nullptr);
+            dissipated = distributed() ? comm_.sum(local) : local;
+            audit_.addDissipation(dissipated);
+        }
         energyBeforeMove_ = before ? std::optional<double>(*before - dissipated) : std::nullopt;
     }
     if (moved && distributed() && regatherDue())

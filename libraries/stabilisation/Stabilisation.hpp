@@ -207,9 +207,10 @@ public:
         (void)materials;
     }
 
-    // The energy the last moveHistory() dissipated, over the particles `owned` names (null:
-    // all): gradF's openedSamples particle (docs/theory/gradF-plastic.md (G22.2)). By default
-    // none.
+    // Whether moveHistory() can dissipate energy (gradF's openedSamples particle,
+    // docs/theory/gradF-plastic.md (G22.2)), and how much the last one did over the particles
+    // `owned` names (null: all). By default it cannot.
+    virtual bool movesDissipate() const { return false; }
     virtual double moveDissipation(const std::vector<std::uint8_t>* owned) const
     {
         (void)owned;

@@ -17,7 +17,6 @@ std::string GradF<D>::description()
            "parameter.";
 }
 
-
 template <int D>
 Schema GradF<D>::schema()
 {
@@ -40,12 +39,10 @@ Schema GradF<D>::schema()
                  .choices({"kernel", "conserving", "nonIncreasing"})
                  .defaultValue("kernel"))
         .add(Key::word("openedSamples",
-                       "plasticSamples elasticState: the samples of a particle whose material has "
-                       "opened (a cohesionless druckerPrager beyond its tension cut-off: no "
-                       "stress, no energy): own (each keeps its own state, as every sample) or "
-                       "particle (at each reference move they take that particle's state, so "
-                       "that no sample bridges opened material; the energy their states held is "
-                       "booked as dissipated; docs/theory/gradF-plastic.md §G22)")
+                       "plasticSamples elasticState: the samples of an opened particle (sand "
+                       "beyond its tension cut-off): own (their own states) or particle (at each "
+                       "move they take its state, the energy they held booked as dissipated; "
+                       "docs/theory/gradF-plastic.md §G22)")
                  .choices({"own", "particle"})
                  .defaultValue("own"))
         .add(Key::word("sampleVolume",
@@ -88,7 +85,6 @@ GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
                         "but plasticSamples is " + params.word("plasticSamples"),
                     {"hint: add 'plasticSamples elasticState;' or remove moveWeights"});
     }
-    // The rule acts at the moves of samples that carry their elastic state (§G22).
     if (!elasticState_ && openedFromParticle_)
     {
         params.fail("openedSamples",

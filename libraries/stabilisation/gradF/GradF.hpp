@@ -104,6 +104,7 @@ public:
         dissipationAside_.swap(sampleDissipation_);
     }
     bool movesParticleHistory() const override { return elasticState_; }
+    bool movesDissipate() const override { return openedFromParticle_; }
     double moveDissipation(const std::vector<std::uint8_t>* owned) const override;
     std::string nextToTry(bool updated, bool plastic) const override
     {
