@@ -18,7 +18,9 @@
 // al. 2008 §8.2.4). ψ = 0: no plastic volume change on
 // the cone; ψ = φ: associative. The energy is W = Ψ(εe) + τ:Δεp (P9.4), the step's plastic
 // work being what a commit dissipates; without yielding this is `hencky` to round-off. With
-// ψ ≠ φ the stress is not ∂W/∂F (no incremental potential). α (output only):
+// ψ ≠ φ the stress is not ∂W/∂F (no incremental potential), and the step's plastic work is
+// booked by the trapezoid from the pressure of the last flowing commit, the state's flow
+// pressure: W = Ψ(εe) + τ:Δεp + ½ (η̄ − η) Δγ (p_c − p) (P9.7). α (output only):
 // α += √(2/3)|dev Δεp|. 2D plane strain and 3D only (registered so: a 1D case is told so).
 // Keys:
 //   E, nu, rho       | as `hencky`
@@ -86,8 +88,11 @@ public:
     // The model's part of ReturnMapPlasticity (§P9): the cone/cut-off return in principal log
     // strains at N points side by side (ReturnLanes.hpp), W − Ψ(εe) = τ:Δεp, and the commit's
     // V0 τ:Δεp.
+    // Its states keep the pressure of their last flowing commit (used where ψ ≠ φ, (P9.7)).
+    static constexpr bool keepsFlowPressure = true;
     template <int N>
-    void returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha, FlowLanes<N>& flow) const;
+    void returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha, const Lane<N>& flowPressure,
+                     FlowLanes<N>& flow) const;
     // The elastic law with the tension cut-off in it (P9.5), at N points: Hencky's, but the
     // volumetric stress p = min(K εv, σt): strain beyond σt/K opens voids that close again
     // without stress.
@@ -170,7 +175,7 @@ private:
 template <int D>
 template <int N>
 void DruckerPrager<D>::returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha,
-                                   FlowLanes<N>& flow) const
+                                   const Lane<N>& flowPressure, FlowLanes<N>& flow) const
 {
     const double K = this->law_.K;
     const double mu = this->law_.mu;
@@ -212,15 +217,24 @@ void DruckerPrager<D>::returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha,
             plasticNorm[i] += (dev - devReturned) * (dev - devReturned);
         }
     }
+    // (P9.7): where ψ ≠ φ the step's τ:Δεp is the right end of ∫ τ:dεp, which on the cone
+    // differs from the work the forces did by (η̄ − η) ∫ Δγ dp; the trapezoid from the last
+    // flowing commit's pressure p_c closes it to second order. At the start of a flow (no p_c)
+    // the right end is kept.
+    const bool nonAssociative = etaBar_ != eta_;
     for (int i = 0; i < N; ++i)
     {
         const double p = std::min(K * evReturned[i], tensileStrength_);
-        const double dissipation = 2.0 * mu * work[i] + p * (trial.volumetric[i] - evReturned[i]);
+        const double rightEnd = 2.0 * mu * work[i] + p * (trial.volumetric[i] - evReturned[i]);
+        const bool trapezoid = nonAssociative && flowPressure[i] != noFlowPressure;
+        const double correction =
+            trapezoid ? 0.5 * (etaBar_ - eta_) * deltaGamma[i] * (flowPressure[i] - p) : 0.0;
         const double nextAlpha = alpha[i] + std::sqrt(2.0 / 3.0) * std::sqrt(plasticNorm[i]);
         const bool flows = phiTrial[i] > 0.0;
         flow.deltaGamma[i] = flows ? deltaGamma[i] : 0.0;
         flow.alpha[i] = flows ? nextAlpha : alpha[i];
-        flow.dissipation[i] = flows ? dissipation : 0.0;
+        flow.dissipation[i] = flows ? rightEnd + correction : 0.0;
+        flow.pressure[i] = flows && nonAssociative ? p : noFlowPressure;
     }
 }
 

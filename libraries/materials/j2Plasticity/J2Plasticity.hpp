@@ -43,8 +43,11 @@ public:
 
     // The model's part of ReturnMapPlasticity: the radial return (§P5) in principal log
     // strains at N points side by side (ReturnLanes.hpp), the bar's return (§P6), W − Ψ(εe) = Ψh(α) + σy0 Δγ, and the commit's V0 σy0 Δγ.
+    // Associative: its dissipation's book needs no flow pressure (plasticity.md (P9.7)).
+    static constexpr bool keepsFlowPressure = false;
     template <int N>
-    void returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha, FlowLanes<N>& flow) const;
+    void returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha, const Lane<N>& flowPressure,
+                     FlowLanes<N>& flow) const;
     Flow returnUniaxial(double& eps, double alpha) const;
     double extraEnergy(const Flow& flow) const { return hardeningEnergy(flow.alpha) + flow.dissipation; }
     // This product order (V0 σy0 first) keeps the energy audit bit-identical to j2Plasticity
@@ -64,7 +67,8 @@ private:
 
 template <int D>
 template <int N>
-void J2Plasticity<D>::returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha, FlowLanes<N>& flow) const
+void J2Plasticity<D>::returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha,
+                                  const Lane<N>& /*flowPressure*/, FlowLanes<N>& flow) const
 {
     const double mu = this->elastic_.mu;
     const DeviatorLanes<N> trial(eps);

@@ -32,7 +32,7 @@ template <int D, int N> struct LanesResult
     }
     PlasticFlow flowAt(int i) const
     {
-        return {flow.deltaGamma[i], flow.alpha[i], flow.dissipation[i]};
+        return {flow.deltaGamma[i], flow.alpha[i], flow.dissipation[i], flow.pressure[i]};
     }
     void packNext(int i, double* out) const
     {

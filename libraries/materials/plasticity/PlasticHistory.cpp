@@ -24,6 +24,15 @@ const FieldSpec& inversePlasticZZField()
             .restart();
     return spec;
 }
+const FieldSpec& flowPressureField()
+{
+    static const FieldSpec spec =
+        FieldSpec::scalar("plasticFlowPressure",
+                          "mean stress at which the last commit flowed, 1e300 if it did not; "
+                          "sphSolid before 2026-11-29 did not keep it")
+            .restart();
+    return spec;
+}
 const FieldSpec& committedAlphaField()
 {
     static const FieldSpec spec =
@@ -61,6 +70,7 @@ std::vector<FieldSpec> PlasticHistory<D>::fields()
     {
         specs.push_back(inversePlasticZZField());
     }
+    specs.push_back(flowPressureField());
     specs.push_back(committedAlphaField());
     specs.push_back(plasticStrainField());
     specs.push_back(yieldingField());
@@ -83,6 +93,7 @@ PlasticHistory<D>::PlasticHistory(const typename Material<D>::Args& args)
     {
         inversePlasticZZ_ = &fields->template declare<double>(inversePlasticZZField(), 1.0);
     }
+    flowPressure_ = &fields->template declare<double>(flowPressureField(), noFlowPressure);
     alpha_ = &fields->template declare<double>(committedAlphaField(), 0.0);
 }
 
@@ -94,6 +105,7 @@ void PlasticHistory<D>::store(std::size_t a, const PlasticState<D>& s)
     {
         (*inversePlasticZZ_)[a] = s.inversePlasticZZ;
     }
+    (*flowPressure_)[a] = s.flowPressure;
     (*alpha_)[a] = s.alpha;
 }
 

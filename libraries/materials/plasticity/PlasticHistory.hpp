@@ -7,8 +7,8 @@
 // restart files keep loading whichever material wrote them.
 //
 // Fields: restart:inversePlasticCauchyGreen, restart:inversePlasticCauchyGreenZZ (2D),
-// restart:equivalentPlasticStrain (the committed state), plasticStrain and yielding (display,
-// derived by the material at the written level).
+// restart:plasticFlowPressure, restart:equivalentPlasticStrain (the committed state),
+// plasticStrain and yielding (display, derived by the material at the written level).
 
 #include "materials/Material.hpp"
 
@@ -19,35 +19,49 @@
 namespace sph
 {
 
+// The flow pressure of a state whose last commit did not flow (or of a model that keeps none):
+// above any pressure a material can carry (finite: restart data must be).
+inline constexpr double noFlowPressure = 1e300;
+
 // One committed state, and the same as historyComponents() numbers (HistoryOf::samples):
-// Cp⁻¹ (D×D, row-major), then Cp⁻¹_zz (2D), then α.
+// Cp⁻¹ (D×D, row-major), then Cp⁻¹_zz (2D), then the flow pressure, then α. The flow pressure
+// is the mean stress at which the commit that wrote the state flowed (noFlowPressure if it did
+// not): the start of the next step's trapezoid for the dissipation of a non-associative flow
+// (docs/theory/plasticity.md (P9.7)); only `druckerPrager` with ψ ≠ φ sets it.
 template <int D>
 struct PlasticState
 {
     Mat<D> inversePlastic = Mat<D>::Identity();
     double inversePlasticZZ = 1.0;
+    double flowPressure = noFlowPressure;
     double alpha = 0.0;
 
-    static constexpr std::size_t packedSize = D * D + (D == 2 ? 1 : 0) + 1;
+    static constexpr std::size_t flowPressureAt = D * D + (D == 2 ? 1 : 0);
+    static constexpr std::size_t packedSize = flowPressureAt + 2;
     void pack(double* out) const;
     static PlasticState unpack(const double* in);
 
     // The compact form of a packed state (Material::compactHistory): Cp⁻¹ is symmetric, so its
-    // upper triangle row by row, then the rest as packed (3D: 7 numbers, not 10). compact()
-    // says whether expand() gives the state back bit for bit (its Cp⁻¹ is symmetric to the bit,
-    // as every update of it makes it: ½ (C + Cᵀ)).
-    static constexpr std::size_t compactSize = D * (D + 1) / 2 + (D == 2 ? 1 : 0) + 1;
-    static bool compact(const double* packed, double* out);
-    static void expand(const double* compact, double* packed);
+    // upper triangle row by row, then the rest as packed, the flow pressure only for a model
+    // that keeps one (3D: 7 or 8 numbers, not 11). compact() says whether expand() gives the
+    // state back bit for bit (its Cp⁻¹ is symmetric to the bit, as every update of it makes it:
+    // ½ (C + Cᵀ); without the flow pressure, that it is noFlowPressure).
+    static constexpr std::size_t compactSize(bool withFlowPressure)
+    {
+        return D * (D + 1) / 2 + (D == 2 ? 1 : 0) + (withFlowPressure ? 1 : 0) + 1;
+    }
+    static bool compact(const double* packed, double* out, bool withFlowPressure);
+    static void expand(const double* compact, double* packed, bool withFlowPressure);
 };
 
 // What a return did at one point: its plastic multiplier (> 0: the point flows), the α it
-// leads to and the step's dissipation per unit initial volume.
+// leads to, the step's dissipation per unit initial volume and the flow pressure to keep.
 struct PlasticFlow
 {
     double deltaGamma = 0.0;
     double alpha = 0.0;
     double dissipation = 0.0;
+    double pressure = noFlowPressure; // the flow pressure the state to commit keeps
 };
 
 template <int D>
@@ -72,6 +86,7 @@ private:
     ParticleFields<D>* registry_ = nullptr;
     std::vector<Mat<D>>* inversePlastic_ = nullptr;
     std::vector<double>* inversePlasticZZ_ = nullptr; // 2D only
+    std::vector<double>* flowPressure_ = nullptr;
     std::vector<double>* alpha_ = nullptr;
 };
 
@@ -87,6 +102,7 @@ inline void PlasticState<D>::pack(double* out) const
     {
         out[D * D] = inversePlasticZZ;
     }
+    out[flowPressureAt] = flowPressure;
     out[packedSize - 1] = alpha;
 }
 
@@ -102,12 +118,13 @@ inline PlasticState<D> PlasticState<D>::unpack(const double* in)
     {
         s.inversePlasticZZ = in[D * D];
     }
+    s.flowPressure = in[flowPressureAt];
     s.alpha = in[packedSize - 1];
     return s;
 }
 
 template <int D>
-inline bool PlasticState<D>::compact(const double* packed, double* out)
+inline bool PlasticState<D>::compact(const double* packed, double* out, bool withFlowPressure)
 {
     bool symmetric = true;
     for (int i = 0; i < D; ++i)
@@ -118,12 +135,18 @@ inline bool PlasticState<D>::compact(const double* packed, double* out)
             symmetric = symmetric && std::memcmp(&packed[i * D + j], &packed[j * D + i], sizeof(double)) == 0;
         }
     }
-    std::copy(packed + D * D, packed + packedSize, out);
-    return symmetric;
+    if (withFlowPressure)
+    {
+        std::copy(packed + D * D, packed + packedSize, out);
+        return symmetric;
+    }
+    std::copy(packed + D * D, packed + flowPressureAt, out);
+    out[flowPressureAt - D * D] = packed[packedSize - 1];
+    return symmetric && packed[flowPressureAt] == noFlowPressure;
 }
 
 template <int D>
-inline void PlasticState<D>::expand(const double* compact, double* packed)
+inline void PlasticState<D>::expand(const double* compact, double* packed, bool withFlowPressure)
 {
     for (int i = 0; i < D; ++i)
     {
@@ -133,7 +156,14 @@ inline void PlasticState<D>::expand(const double* compact, double* packed)
             packed[j * D + i] = *compact++;
         }
     }
-    std::copy(compact, compact + (packedSize - D * D), packed + D * D);
+    if (withFlowPressure)
+    {
+        std::copy(compact, compact + (packedSize - D * D), packed + D * D);
+        return;
+    }
+    std::copy(compact, compact + (flowPressureAt - D * D), packed + D * D);
+    packed[flowPressureAt] = noFlowPressure;
+    packed[packedSize - 1] = compact[flowPressureAt - D * D];
 }
 
 template <int D>
@@ -149,6 +179,7 @@ inline PlasticState<D> PlasticHistory<D>::state(std::size_t a) const
     {
         s.inversePlasticZZ = (*inversePlasticZZ_)[a];
     }
+    s.flowPressure = (*flowPressure_)[a];
     s.alpha = (*alpha_)[a];
     return s;
 }

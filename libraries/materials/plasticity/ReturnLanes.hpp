@@ -49,13 +49,15 @@ struct PrincipalLanes
     Lane<N> vectors[D][D];
 };
 
-// What a return did at N points (PlasticFlow's fields, lane by lane).
+// What a return did at N points (PlasticFlow's fields, lane by lane). pressure starts as
+// noFlowPressure; a model that keeps a flow pressure sets it where the point flows.
 template <int N>
 struct FlowLanes
 {
     Lane<N> deltaGamma;
     Lane<N> alpha;
     Lane<N> dissipation;
+    Lane<N> pressure;
 };
 
 // The volumetric and deviatoric parts of N points' strains, computed as the point-by-point

@@ -90,6 +90,7 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     static_assert(D == 2 || D == 3, "the bar (1D) has its own return");
     constexpr int zz = D * D;                       // 2D: Cp⁻¹_zz's place in a packed state
     constexpr int alphaAt = State::packedSize - 1; // α's
+    constexpr int pressureAt = State::flowPressureAt;
     // Gather: F, Cp⁻¹ (all D² components, as a packed state holds them), zz and α. Unused
     // lanes hold the virgin state at F = I, where every branch is finite.
     Lane<N> f[D][D], committed[State::packedSize];
@@ -104,6 +105,10 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     {
         const bool unit = c != alphaAt && (c == zz || (c < zz && c / D == c % D));
         committed[c] = Lane<N>::Constant(unit ? 1.0 : 0.0);
+        if (c == pressureAt)
+        {
+            committed[c] = Lane<N>::Constant(noFlowPressure);
+        }
     }
     for (std::size_t i = 0; i < count; ++i)
     {
@@ -131,9 +136,10 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     PrincipalLanes<N, D> principal;
     principalOf<N>(be, committed[D == 2 ? zz : alphaAt], principal);
 
+    out.flow.pressure = Lane<N>::Constant(noFlowPressure);
     if (flow)
     {
-        model().template returnLanes<N>(principal.strain, alpha, out.flow);
+        model().template returnLanes<N>(principal.strain, alpha, committed[pressureAt], out.flow);
     }
     else
     {
@@ -229,13 +235,15 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     }
 
     // The states to commit: where the point flows the returned be pulled back (§P4 step 4),
-    // elsewhere the committed state.
+    // elsewhere the committed state; the flow pressure the return's (noFlowPressure where the
+    // point does not flow).
     for (int i = 0; i < N; ++i)
     {
         for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
         {
             out.next[c][i] = committed[c][i];
         }
+        out.next[pressureAt][i] = out.flow.pressure[i];
         if (!(out.flow.deltaGamma[i] > 0.0))
         {
             continue;

@@ -66,6 +66,7 @@ void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double*
             else
             {
                 std::copy(committed, committed + State::packedSize, next);
+                next[State::flowPressureAt] = noFlowPressure;
             }
             history.dissipation[i] = r.flow.dissipation;
         }

@@ -8,8 +8,11 @@
 // over eight points side by side, ReturnMapLanes.hpp, that every return runs through):
 //
 //   template <int N> void returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha,
-//       FlowLanes<N>& flow) const;  2D/3D: the return in principal log strains at N points
-//       side by side (ReturnLanes.hpp; eps: trial in, returned out; alpha: the committed α)
+//       const Lane<N>& flowPressure, FlowLanes<N>& flow) const;  2D/3D: the return in
+//       principal log strains at N points side by side (ReturnLanes.hpp; eps: trial in,
+//       returned out; alpha: the committed α; flowPressure: the committed state's)
+//   static constexpr bool keepsFlowPressure: whether the model sets flow.pressure (its
+//       states then keep it, one number more in each compact state)
 //   Flow returnUniaxial(double& eps, double alpha) const;            1D bar (only if the
 //       model is registered in 1D)
 //   double extraEnergy(const Flow& flow) const;   W − Ψ(εe) when the point has flowed (now or
@@ -81,14 +84,17 @@ public:
     std::size_t historyComponents() const override { return State::packedSize; }
     void packHistory(std::size_t a, double* out) const override { state(a).pack(out); }
     void packInitialHistory(double* out) const override { State{}.pack(out); }
-    std::size_t compactHistoryComponents() const override { return State::compactSize; }
+    std::size_t compactHistoryComponents() const override
+    {
+        return State::compactSize(Model::keepsFlowPressure);
+    }
     bool compactHistory(const double* packed, double* out) const override
     {
-        return State::compact(packed, out);
+        return State::compact(packed, out, Model::keepsFlowPressure);
     }
     void expandHistory(const double* compact, double* out) const override
     {
-        State::expand(compact, out);
+        State::expand(compact, out, Model::keepsFlowPressure);
     }
     // (G4.1): Cp⁻¹ ← M Cp⁻¹ Mᵀ with M = to⁻¹ from, so that to Cp⁻¹ toᵀ = from Cp⁻¹ fromᵀ; the
     // zz component (plane strain: F_zz = 1 on both sides) and α are unchanged.
@@ -443,6 +449,12 @@ double ReturnMapPlasticity<D, Model>::commit(const Mat<D>* F, const double* V0, 
                              {
                                  history_.store(first + i, e.next);
                                  dissipated += model().dissipated(V0[i], e.flow);
+                             }
+                             else if (state(first + i).flowPressure != noFlowPressure)
+                             {
+                                 State s = state(first + i); // the flow has stopped
+                                 s.flowPressure = noFlowPressure;
+                                 history_.store(first + i, s);
                              }
                          });
     return dissipated;

@@ -37,11 +37,13 @@ public:
           nextCp_(fields.template declare<Mat<D>>(spec("NextCp"), Mat<D>::Identity())),
           committedZZ_(fields.template declare<double>(scalar("CommittedZZ"), 1.0)),
           committedAlpha_(fields.template declare<double>(scalar("CommittedAlpha"), nan())),
+          committedPressure_(fields.template declare<double>(scalar("CommittedPressure"), nan())),
           waveModulus_(fields.template declare<double>(scalar("WaveModulus"), 0.0)),
           deltaGamma_(fields.template declare<double>(scalar("DeltaGamma"), 0.0)),
           nextAlpha_(fields.template declare<double>(scalar("NextAlpha"), 0.0)),
           nextZZ_(fields.template declare<double>(scalar("NextZZ"), 1.0)),
-          dissipation_(fields.template declare<double>(scalar("Dissipation"), 0.0))
+          dissipation_(fields.template declare<double>(scalar("Dissipation"), 0.0)),
+          nextPressure_(fields.template declare<double>(scalar("NextPressure"), noFlowPressure))
     {
     }
 
@@ -56,10 +58,12 @@ public:
         committedCp_[a] = committed.inversePlastic;
         committedZZ_[a] = committed.inversePlasticZZ;
         committedAlpha_[a] = committed.alpha;
+        committedPressure_[a] = committed.flowPressure;
         waveModulus_[a] = e.waveModulus;
         deltaGamma_[a] = e.flow.deltaGamma;
         nextAlpha_[a] = e.flow.alpha;
         dissipation_[a] = e.flow.dissipation;
+        nextPressure_[a] = e.flow.pressure;
         nextCp_[a] = e.next.inversePlastic;
         nextZZ_[a] = e.next.inversePlasticZZ;
     }
@@ -70,14 +74,16 @@ public:
         if (a >= F_.size() || !sameBits(F_[a], F) ||
             !sameBits(committedCp_[a], committed.inversePlastic) ||
             !sameBits(committedZZ_[a], committed.inversePlasticZZ) ||
-            !sameBits(committedAlpha_[a], committed.alpha))
+            !sameBits(committedAlpha_[a], committed.alpha) ||
+            !sameBits(committedPressure_[a], committed.flowPressure))
         {
             return false;
         }
         e.waveModulus = waveModulus_[a];
-        e.flow = {deltaGamma_[a], nextAlpha_[a], dissipation_[a]};
+        e.flow = {deltaGamma_[a], nextAlpha_[a], dissipation_[a], nextPressure_[a]};
         e.next.inversePlastic = nextCp_[a];
         e.next.inversePlasticZZ = nextZZ_[a];
+        e.next.flowPressure = nextPressure_[a];
         e.next.alpha = nextAlpha_[a];
         return true;
     }
@@ -107,11 +113,13 @@ private:
     std::vector<Mat<D>>& nextCp_;
     std::vector<double>& committedZZ_;
     std::vector<double>& committedAlpha_;
+    std::vector<double>& committedPressure_;
     std::vector<double>& waveModulus_;
     std::vector<double>& deltaGamma_;
     std::vector<double>& nextAlpha_;
     std::vector<double>& nextZZ_;
     std::vector<double>& dissipation_;
+    std::vector<double>& nextPressure_;
 };
 
 } // namespace sph

@@ -36,7 +36,8 @@ inline EnergyWeightsResult chooseEnergyWeights(const double* kernel, const doubl
     EnergyWeightsResult result;
     // Energies relative to the kernel's mean, for the exponentials' range.
     double mean = 0.0;
-    double spread = 0.0;
+    double below = 0.0; // max (mean − W) over the weighted samples
+    double above = 0.0; // max (W − mean)
     for (std::size_t j = 0; j < count; ++j)
     {
         mean += kernel[j] * energy[j];
@@ -45,9 +46,11 @@ inline EnergyWeightsResult chooseEnergyWeights(const double* kernel, const doubl
     {
         if (kernel[j] > 0.0)
         {
-            spread = std::max(spread, std::abs(energy[j] - mean));
+            below = std::max(below, mean - energy[j]);
+            above = std::max(above, energy[j] - mean);
         }
     }
+    const double spread = std::max(below, above);
     const double goal = target - mean;
     // Round-off of the sums: a few ulps of the energies' magnitude.
     const double tolerance = std::max(8.0 * std::numeric_limits<double>::epsilon() *
@@ -88,10 +91,15 @@ inline EnergyWeightsResult chooseEnergyWeights(const double* kernel, const doubl
         result.reached = std::abs(e - goal) <= tolerance || (nonIncreasing && e <= goal);
         return result;
     }
-    // e(λ) − goal falls with λ; bracket its root within |λ| spread ≤ 700 (exp's range).
-    const double bound = 700.0 / spread;
-    double low = -bound;
-    double high = bound;
+    // e(λ) − goal falls with λ; bracket its root where no factor exp(−λ u) overflows: λ ≤ 700 /
+    // (mean − min W), −λ ≤ 700 / (max W − mean). An underflow is harmless (that sample's weight
+    // is 0; the one with the smallest −λ u keeps a factor ≥ 1), so one outlying energy does not
+    // narrow the bracket on its own side (it did, to 700 / spread both ways: a particle whose
+    // goal needed a larger λ than its outlier allowed missed it, 2026-11-29).
+    const double high0 = below > 0.0 ? 700.0 / below : 700.0 / spread;
+    const double low0 = above > 0.0 ? -700.0 / above : -700.0 / spread;
+    double low = low0;
+    double high = high0;
     double lambda = 0.0;
     for (result.iterations = 1; result.iterations <= 100; ++result.iterations)
     {
@@ -110,7 +118,7 @@ inline EnergyWeightsResult chooseEnergyWeights(const double* kernel, const doubl
         }
         lambda = next;
         weightsAt(lambda, e, variance);
-        if (std::abs(e - goal) <= tolerance || high - low <= 1e-15 * bound)
+        if (std::abs(e - goal) <= tolerance || high - low <= 1e-15 * (high0 - low0))
         {
             break;
         }

@@ -65,11 +65,16 @@ public:
             {
                 continue;
             }
-            if (codec_ && (material->historyComponents() != stride_ ||
-                           material->compactHistoryComponents() != pool_.width()))
+            if (codec_ && material->historyComponents() != stride_)
             {
                 throw std::logic_error("SampleHistory: materials with histories of different "
                                        "layouts");
+            }
+            // One packed layout, compact forms that may keep more or less of it (druckerPrager
+            // keeps its flow pressure, j2Plasticity not): the widest keeps every state.
+            if (codec_ && material->compactHistoryComponents() <= pool_.width())
+            {
+                continue;
             }
             codec_ = material;
             stride_ = material->historyComponents();

@@ -315,24 +315,40 @@ template <int D>
 void compactFormIsExact()
 {
     INFO(D << "D");
-    CHECK(PlasticState<D>::compactSize == D * (D + 1) / 2 + (D == 2 ? 1 : 0) + 1);
+    // j2Plasticity keeps no flow pressure, druckerPrager does (one number more).
+    CHECK(PlasticState<D>::compactSize(false) == D * (D + 1) / 2 + (D == 2 ? 1 : 0) + 1);
+    CHECK(PlasticState<D>::compactSize(true) == PlasticState<D>::compactSize(false) + 1);
     std::mt19937 random(23);
-    std::vector<double> compact(PlasticState<D>::compactSize);
-    std::vector<double> back(PlasticState<D>::packedSize);
-    for (int i = 0; i < 100; ++i)
+    std::uniform_real_distribution<double> pressure(-1e4, 1e3);
+    for (const bool withFlowPressure : {false, true})
     {
-        const std::vector<double> state = randomState<D>(random);
-        REQUIRE(PlasticState<D>::compact(state.data(), compact.data()));
-        PlasticState<D>::expand(compact.data(), back.data());
-        REQUIRE(sameBits(back.data(), state.data(), state.size()));
+        INFO("with the flow pressure: " << withFlowPressure);
+        std::vector<double> compact(PlasticState<D>::compactSize(withFlowPressure));
+        std::vector<double> back(PlasticState<D>::packedSize);
+        for (int i = 0; i < 100; ++i)
+        {
+            std::vector<double> state = randomState<D>(random);
+            if (withFlowPressure && i % 2 == 1)
+            {
+                state[PlasticState<D>::flowPressureAt] = pressure(random);
+            }
+            REQUIRE(PlasticState<D>::compact(state.data(), compact.data(), withFlowPressure));
+            PlasticState<D>::expand(compact.data(), back.data(), withFlowPressure);
+            REQUIRE(sameBits(back.data(), state.data(), state.size()));
+        }
+        if constexpr (D > 1)
+        {
+            std::vector<double> state = randomState<D>(random);
+            state[1] = -0.0; // Cp⁻¹_01
+            state[D] = 0.0;  // Cp⁻¹_10: equal, not the same bits
+            CHECK_FALSE(PlasticState<D>::compact(state.data(), compact.data(), withFlowPressure));
+        }
     }
-    if constexpr (D > 1)
-    {
-        std::vector<double> state = randomState<D>(random);
-        state[1] = -0.0; // Cp⁻¹_01
-        state[D] = 0.0;  // Cp⁻¹_10: equal, not the same bits
-        CHECK_FALSE(PlasticState<D>::compact(state.data(), compact.data()));
-    }
+    // A flow pressure the form without it cannot keep: refused, not dropped.
+    std::vector<double> state = randomState<D>(random);
+    state[PlasticState<D>::flowPressureAt] = -250.0;
+    std::vector<double> compact(PlasticState<D>::compactSize(false));
+    CHECK_FALSE(PlasticState<D>::compact(state.data(), compact.data(), false));
 }
 
 } // namespace
@@ -460,4 +476,60 @@ TEST_CASE("StatePool: relocate() moves the held records to their destinations, i
     // A destination list of the wrong length is refused.
     std::vector<StatePool::Index> wrong(3, StatePool::none);
     CHECK_THROWS_AS(pool.relocate(wrong), std::logic_error);
+}
+
+// Bodies of j2Plasticity and druckerPrager in one case share the samples' store: one packed
+// layout, and the records in druckerPrager's compact form, the wider (it keeps the flow
+// pressure, plasticity.md (P9.7)), whichever material is declared first.
+TEST_CASE("gradF samples of j2Plasticity and druckerPrager bodies share one store that keeps the "
+          "flow pressure",
+          "[samples][memory]")
+{
+    constexpr int D = 3;
+    const char* kDP = "type druckerPrager; E 2.5; nu 0.3; rho 1; frictionAngle 30;";
+    for (const bool j2First : {true, false})
+    {
+        INFO("j2Plasticity declared first: " << j2First);
+        ParticleFields<D> fields;
+        fields.setSize(2);
+        const auto j2 = test::build<Material<D>>(kJ2, {&fields, BodyRange{"metal", 0, 1}, nullptr}, D);
+        const auto dp = test::build<Material<D>>(kDP, {&fields, BodyRange{"sand", 1, 2}, nullptr}, D);
+        REQUIRE(j2->historyComponents() == dp->historyComponents());
+        REQUIRE(dp->compactHistoryComponents() == j2->compactHistoryComponents() + 1);
+        SampleHistory<D> history;
+        if (j2First)
+        {
+            history.declare({j2.get(), dp.get()}, fields);
+        }
+        else
+        {
+            history.declare({dp.get(), j2.get()}, fields);
+        }
+        // Two samples each: a flowing sand state (its flow pressure set), and the initial state.
+        std::mt19937 random(3);
+        std::vector<double> sand = randomState<D>(random);
+        sand[PlasticState<D>::flowPressureAt] = -1234.5;
+        const std::size_t width = history.width();
+        std::vector<double> values(4 * width, 0.0);
+        for (std::size_t k = 0; k < 4; ++k)
+        {
+            values[k * width] = static_cast<double>(k % 2); // the neighbour's index
+            std::vector<double> state(PlasticState<D>::packedSize);
+            if (k == 1)
+            {
+                state = sand;
+            }
+            else
+            {
+                PlasticState<D>{}.pack(state.data());
+            }
+            std::copy(state.begin(), state.end(), &values[k * width + 1]);
+        }
+        history.assign({2, 2}, values);
+        CHECK(history.storedStates() == 1);
+        std::vector<double> back(4 * width);
+        history.get(0, back.data());
+        history.get(1, back.data() + 2 * width);
+        CHECK(sameBits(back.data(), values.data(), values.size()));
+    }
 }
