@@ -78,6 +78,15 @@ public:
 
     PlasticState<D> state(std::size_t a) const;
     void store(std::size_t a, const PlasticState<D>& s);
+    // A commit that did not flow: the state is kept, its flow pressure is forgotten (P9.7).
+    // (Points a material built alone was not sized for read as virgin, see state().)
+    void forgetFlowPressure(std::size_t a)
+    {
+        if (a < flowPressure_->size())
+        {
+            (*flowPressure_)[a] = noFlowPressure;
+        }
+    }
     // The registry the fields live in (the run's, or this history's own).
     ParticleFields<D>& registry() const { return *registry_; }
 

@@ -103,12 +103,8 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     }
     for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
     {
-        const bool unit = c != alphaAt && (c == zz || (c < zz && c / D == c % D));
-        committed[c] = Lane<N>::Constant(unit ? 1.0 : 0.0);
-        if (c == pressureAt)
-        {
-            committed[c] = Lane<N>::Constant(noFlowPressure);
-        }
+        const bool unit = c != alphaAt && c != pressureAt && (c == zz || (c < zz && c / D == c % D));
+        committed[c] = Lane<N>::Constant(c == pressureAt ? noFlowPressure : unit ? 1.0 : 0.0);
     }
     for (std::size_t i = 0; i < count; ++i)
     {

@@ -450,11 +450,9 @@ double ReturnMapPlasticity<D, Model>::commit(const Mat<D>* F, const double* V0, 
                                  history_.store(first + i, e.next);
                                  dissipated += model().dissipated(V0[i], e.flow);
                              }
-                             else if (state(first + i).flowPressure != noFlowPressure)
+                             else
                              {
-                                 State s = state(first + i); // the flow has stopped
-                                 s.flowPressure = noFlowPressure;
-                                 history_.store(first + i, s);
+                                 history_.forgetFlowPressure(first + i); // the flow has stopped
                              }
                          });
     return dissipated;
