@@ -90,24 +90,25 @@ public:
     // V0 τ:Δεp.
     // Its states keep the pressure of their last flowing commit (used where ψ ≠ φ, (P9.7)).
     static constexpr bool keepsFlowPressure = true;
-    template <int N>
-    void returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha, const Lane<N>& flowPressure,
+    template <int N, int C>
+    void returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha, const Lane<N>& flowPressure,
                      FlowLanes<N>& flow) const;
     // The elastic law with the tension cut-off in it (P9.5), at N points: Hencky's, but the
     // volumetric stress p = min(K εv, σt): strain beyond σt/K opens voids that close again
     // without stress.
-    template <int N> void kirchhoffLanesOf(const DeviatorLanes<N>& e, Lane<N> (&tau)[3]) const
+    template <int N, int C> void kirchhoffLanesOf(const DeviatorLanes<N, C>& e, Lane<N> (&tau)[C]) const
     {
-        for (int k = 0; k < 3; ++k)
+        for (int k = 0; k < C; ++k)
         {
             for (int i = 0; i < N; ++i)
             {
-                tau[k][i] = 2.0 * this->law_.mu * e.dev[k][i] +
-                            std::min(this->law_.K * e.volumetric[i], tensileStrength_);
+                tau[k][i] = onDiagonal(k) ? 2.0 * this->law_.mu * e.dev[k][i] +
+                                                std::min(this->law_.K * e.volumetric[i], tensileStrength_)
+                                          : 2.0 * this->law_.mu * e.dev[k][i];
             }
         }
     }
-    template <int N> Lane<N> elasticEnergyLanesOf(const DeviatorLanes<N>& e) const
+    template <int N, int C> Lane<N> elasticEnergyLanesOf(const DeviatorLanes<N, C>& e) const
     {
         const double K = this->law_.K;
         const double opening = tensileStrength_ / K; // εt
@@ -125,7 +126,7 @@ public:
     // the voids are open (εv > εt) the pressure does not change with εv, so only the shear
     // modulus acts, and not even that at the apex of a cohesionless cone, where every
     // admissible state is stress-free; elsewhere the elastic M = K + 4μ/3.
-    template <int N> Lane<N> waveModulusLanesOf(const DeviatorLanes<N>& e) const
+    template <int N, int C> Lane<N> waveModulusLanesOf(const DeviatorLanes<N, C>& e) const
     {
         const double open =
             xi_ * cohesion_ - eta_ * tensileStrength_ > 0.0 ? 4.0 * this->law_.mu / 3.0 : 0.0;
@@ -173,14 +174,14 @@ private:
 };
 
 template <int D>
-template <int N>
-void DruckerPrager<D>::returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha,
+template <int N, int C>
+void DruckerPrager<D>::returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha,
                                    const Lane<N>& flowPressure, FlowLanes<N>& flow) const
 {
     const double K = this->law_.K;
     const double mu = this->law_.mu;
     const double opening = tensileStrength_ / K; // εt: beyond it the voids open (P9.5)
-    const DeviatorLanes<N> trial(eps);
+    const DeviatorLanes<N, C> trial(eps);
     // Each loop over the lanes vectorises: both branches computed, one kept per lane.
     Lane<N> phiTrial, evReturned, shearScale, deltaGamma;
     for (int i = 0; i < N; ++i)
@@ -202,19 +203,29 @@ void DruckerPrager<D>::returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha,
         // √J2 = ξc − η p ≥ 0 after the return, since p ≤ σt ≤ ξ c/η.
         shearScale[i] = std::max(1.0 - mu * deltaGamma[i] / rootJ2Trial, 0.0);
     }
-    // τ:Δεp = s:Δe + p Δεv (P9.4), and α += √(2/3)|dev Δεp|.
+    // τ:Δεp = s:Δe + p Δεv (P9.4), and α += √(2/3)|dev Δεp| (a tensor's off-diagonal
+    // components twice).
     Lane<N> work = Lane<N>::Zero();
     Lane<N> plasticNorm = Lane<N>::Zero();
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < C; ++k)
     {
         for (int i = 0; i < N; ++i)
         {
             const double dev = trial.dev[k][i];
             const double devReturned = shearScale[i] * dev;
             const bool flows = phiTrial[i] > 0.0;
-            eps.eps[k][i] = flows ? devReturned + evReturned[i] / 3.0 : eps.eps[k][i];
-            work[i] += devReturned * (dev - devReturned);
-            plasticNorm[i] += (dev - devReturned) * (dev - devReturned);
+            if (onDiagonal(k))
+            {
+                eps.eps[k][i] = flows ? devReturned + evReturned[i] / 3.0 : eps.eps[k][i];
+                work[i] += devReturned * (dev - devReturned);
+                plasticNorm[i] += (dev - devReturned) * (dev - devReturned);
+            }
+            else
+            {
+                eps.eps[k][i] = flows ? devReturned : eps.eps[k][i];
+                work[i] += 2.0 * (devReturned * (dev - devReturned));
+                plasticNorm[i] += 2.0 * ((dev - devReturned) * (dev - devReturned));
+            }
         }
     }
     // (P9.7): where ψ ≠ φ the step's τ:Δεp is the right end of ∫ τ:dεp, which on the cone

@@ -45,8 +45,8 @@ public:
     // strains at N points side by side (ReturnLanes.hpp), the bar's return (§P6), W − Ψ(εe) = Ψh(α) + σy0 Δγ, and the commit's V0 σy0 Δγ.
     // Associative: its dissipation's book needs no flow pressure (plasticity.md (P9.7)).
     static constexpr bool keepsFlowPressure = false;
-    template <int N>
-    void returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha, const Lane<N>& flowPressure,
+    template <int N, int C>
+    void returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha, const Lane<N>& flowPressure,
                      FlowLanes<N>& flow) const;
     Flow returnUniaxial(double& eps, double alpha) const;
     double extraEnergy(const Flow& flow) const { return hardeningEnergy(flow.alpha) + flow.dissipation; }
@@ -66,12 +66,12 @@ private:
 };
 
 template <int D>
-template <int N>
-void J2Plasticity<D>::returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha,
+template <int N, int C>
+void J2Plasticity<D>::returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha,
                                   const Lane<N>& /*flowPressure*/, FlowLanes<N>& flow) const
 {
     const double mu = this->elastic_.mu;
-    const DeviatorLanes<N> trial(eps);
+    const DeviatorLanes<N, C> trial(eps);
     for (int i = 0; i < N; ++i)
     {
         const double qTrial = std::sqrt(1.5) * 2.0 * mu * trial.norm[i];
@@ -82,9 +82,16 @@ void J2Plasticity<D>::returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha,
             sigmaY0_ + H_ * (alpha[i] + hardened) < 0.0 ? qTrial / (3.0 * mu) : hardened;
         const double shearScale = 1.0 - 3.0 * mu * deltaGamma / qTrial;
         const double ev = trial.volumetric[i];
-        for (int k = 0; k < 3; ++k)
+        for (int k = 0; k < C; ++k)
         {
-            eps.eps[k][i] = flows ? trial.dev[k][i] * shearScale + ev / 3.0 : eps.eps[k][i];
+            if (onDiagonal(k))
+            {
+                eps.eps[k][i] = flows ? trial.dev[k][i] * shearScale + ev / 3.0 : eps.eps[k][i];
+            }
+            else
+            {
+                eps.eps[k][i] = flows ? trial.dev[k][i] * shearScale : eps.eps[k][i];
+            }
         }
         const Flow f = flowOf(flows ? deltaGamma : 0.0, alpha[i]);
         flow.deltaGamma[i] = f.deltaGamma;

@@ -23,14 +23,24 @@ namespace sph
 template <int N>
 using Lane = Eigen::Array<double, N, 1>;
 
-// The three principal logarithmic strains of N points: eps[k][i] is point i's k-th.
-template <int N>
+// The logarithmic strains of N points, C components each: C = 3 their principal values, C = 6
+// the symmetric tensor (00, 11, 22, 01, 02, 12; TensorLanes.hpp), whose off-diagonal
+// components count twice in a norm. The models' returns and elastic laws are written for any C:
+// they act on the volumetric part and scale the deviatoric one, which needs no principal axes.
+// eps[k][i] is point i's k-th component.
+template <int N, int C = 3>
 struct StrainLanes
 {
-    Lane<N> eps[3];
+    static_assert(C == 3 || C == 6, "principal values (3) or a symmetric tensor (6)");
+    Lane<N> eps[C];
 
-    Eigen::Vector3d point(int i) const { return {eps[0][i], eps[1][i], eps[2][i]}; }
+    Eigen::Vector3d point(int i) const
+        requires(C == 3)
+    {
+        return {eps[0][i], eps[1][i], eps[2][i]};
+    }
     void setPoint(int i, const Eigen::Vector3d& e)
+        requires(C == 3)
     {
         for (int k = 0; k < 3; ++k)
         {
@@ -38,6 +48,9 @@ struct StrainLanes
         }
     }
 };
+
+// Whether component k of a strain's C is on the diagonal (a principal value is).
+constexpr bool onDiagonal(int k) { return k < 3; }
 
 // N symmetric positive-definite D×D matrices (be) in principal form: the principal log
 // strains (in 2D the third is zz's) and the directions, vectors[i][k] the i-th component of
@@ -61,33 +74,43 @@ struct FlowLanes
 };
 
 // The volumetric and deviatoric parts of N points' strains, computed as the point-by-point
-// law always has: εv = (ε0 + ε1) + ε2, e = ε − εv/3, |e|.
-template <int N>
+// law always has: εv = (ε0 + ε1) + ε2, e = ε − εv/3 (on the diagonal), |e|.
+template <int N, int C = 3>
 struct DeviatorLanes
 {
     Lane<N> volumetric;
-    Lane<N> dev[3];
+    Lane<N> dev[C];
     Lane<N> norm;
 
-    explicit DeviatorLanes(const StrainLanes<N>& s)
+    explicit DeviatorLanes(const StrainLanes<N, C>& s)
     {
         for (int i = 0; i < N; ++i)
         {
             const double ev = s.eps[0][i] + s.eps[1][i] + s.eps[2][i];
-            const double d0 = s.eps[0][i] - ev / 3.0;
-            const double d1 = s.eps[1][i] - ev / 3.0;
-            const double d2 = s.eps[2][i] - ev / 3.0;
             volumetric[i] = ev;
-            dev[0][i] = d0;
-            dev[1][i] = d1;
-            dev[2][i] = d2;
-            norm[i] = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
+            for (int k = 0; k < C; ++k)
+            {
+                dev[k][i] = onDiagonal(k) ? s.eps[k][i] - ev / 3.0 : s.eps[k][i];
+            }
+        }
+        for (int i = 0; i < N; ++i)
+        {
+            norm[i] = std::sqrt(squaredNorm(i));
         }
     }
-    // |e|² of point i.
+    // |e|² of point i (a tensor's off-diagonal components twice).
     double squaredNorm(int i) const
     {
-        return dev[0][i] * dev[0][i] + dev[1][i] * dev[1][i] + dev[2][i] * dev[2][i];
+        const double diagonal = dev[0][i] * dev[0][i] + dev[1][i] * dev[1][i] + dev[2][i] * dev[2][i];
+        if constexpr (C == 3)
+        {
+            return diagonal;
+        }
+        else
+        {
+            return diagonal + 2.0 * (dev[3][i] * dev[3][i] + dev[4][i] * dev[4][i] +
+                                     dev[5][i] * dev[5][i]);
+        }
     }
 };
 

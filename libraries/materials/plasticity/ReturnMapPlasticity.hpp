@@ -139,28 +139,29 @@ private:
     // The elastic law at N points side by side, from the volumetric and deviatoric parts of
     // their principal log strains: the model's own, else Hencky's (P2.2),
     // τₖ = 2μ eₖ + K εv and Ψ = μ |e|² + ½ K εv².
-    template <int N> void kirchhoffLanes(const DeviatorLanes<N>& e, Lane<N> (&tau)[3]) const
+    template <int N, int C> void kirchhoffLanes(const DeviatorLanes<N, C>& e, Lane<N> (&tau)[C]) const
     {
-        if constexpr (requires(const Model& m) { m.template kirchhoffLanesOf<N>(e, tau); })
+        if constexpr (requires(const Model& m) { m.template kirchhoffLanesOf<N, C>(e, tau); })
         {
-            model().template kirchhoffLanesOf<N>(e, tau);
+            model().template kirchhoffLanesOf<N, C>(e, tau);
         }
         else
         {
-            for (int k = 0; k < 3; ++k)
+            for (int k = 0; k < C; ++k)
             {
                 for (int i = 0; i < N; ++i)
                 {
-                    tau[k][i] = law_.kirchhoffOf(e.dev[k][i], e.volumetric[i]);
+                    tau[k][i] = onDiagonal(k) ? law_.kirchhoffOf(e.dev[k][i], e.volumetric[i])
+                                              : law_.kirchhoffOf(e.dev[k][i], 0.0);
                 }
             }
         }
     }
-    template <int N> Lane<N> elasticEnergyLanes(const DeviatorLanes<N>& e) const
+    template <int N, int C> Lane<N> elasticEnergyLanes(const DeviatorLanes<N, C>& e) const
     {
-        if constexpr (requires(const Model& m) { m.template elasticEnergyLanesOf<N>(e); })
+        if constexpr (requires(const Model& m) { m.template elasticEnergyLanesOf<N, C>(e); })
         {
-            return model().template elasticEnergyLanesOf<N>(e);
+            return model().template elasticEnergyLanesOf<N, C>(e);
         }
         else
         {
@@ -174,11 +175,11 @@ private:
     }
     // The modulus M of (P2.5) at the returned strains: the model's own (a material that has
     // opened carries no stress, P2.7), else the elastic longitudinal modulus.
-    template <int N> Lane<N> waveModulusLanes(const DeviatorLanes<N>& e) const
+    template <int N, int C> Lane<N> waveModulusLanes(const DeviatorLanes<N, C>& e) const
     {
-        if constexpr (requires(const Model& m) { m.template waveModulusLanesOf<N>(e); })
+        if constexpr (requires(const Model& m) { m.template waveModulusLanesOf<N, C>(e); })
         {
-            return model().template waveModulusLanesOf<N>(e);
+            return model().template waveModulusLanesOf<N, C>(e);
         }
         else
         {
