@@ -77,6 +77,7 @@ template <int D> Schema DruckerPrager<D>::schema()
 {
     return Material<D>::commonSchema()
         .include(IsotropicElasticity::schema())
+        .include(ReturnMapPlasticity<D, DruckerPrager<D>>::lawSchema())
         .add(Key::real("frictionAngle", "internal friction angle phi [degrees] (a "
                                         "pressure-independent material, phi = 0, is "
                                         "j2Plasticity)")

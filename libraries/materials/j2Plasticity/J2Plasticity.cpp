@@ -18,6 +18,7 @@ Schema J2Plasticity<D>::schema()
 {
     return Material<D>::commonSchema()
         .include(IsotropicElasticity::schema())
+        .include(ReturnMapPlasticity<D, J2Plasticity<D>>::lawSchema())
         .add(Key::real("yieldStress", "initial yield stress sigmaY0 [Pa]").positive())
         .add(Key::real("hardeningModulus", "linear isotropic hardening modulus H = "
                                            "dsigmaY/dalpha [Pa]; > -3 mu (1D: > -E), < 0 "

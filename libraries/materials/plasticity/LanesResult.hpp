@@ -41,6 +41,27 @@ template <int D, int N> struct LanesResult
             out[c] = next[c][i];
         }
     }
+    // Lane i of `from` (every field) into lane i.
+    void copyLane(const LanesResult& from, int i)
+    {
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                P[k][l][i] = from.P[k][l][i];
+            }
+        }
+        energy[i] = from.energy[i];
+        flow.deltaGamma[i] = from.flow.deltaGamma[i];
+        flow.alpha[i] = from.flow.alpha[i];
+        flow.dissipation[i] = from.flow.dissipation[i];
+        flow.pressure[i] = from.flow.pressure[i];
+        waveModulus[i] = from.waveModulus[i];
+        for (std::size_t c = 0; c < PlasticState<D>::packedSize; ++c)
+        {
+            next[c][i] = from.next[c][i];
+        }
+    }
     // The state a memo entry holds: next, with the flow's α.
     PlasticState<D> nextAt(int i) const
     {

@@ -8,78 +8,23 @@
 //   the model's return;  τ(ε);  P = (Σ τᵢ nᵢ⊗nᵢ) F⁻ᵀ;  W = Ψ(ε) (+ the model's extra energy
 //   once the point has flowed);  flowing: Cp⁻¹ = F⁻¹ (Σ exp(2εᵢ) nᵢ⊗nᵢ) F⁻ᵀ, symmetrised (and
 //   in 2D be_zz = exp(2ε₂)).
-// The principal form: in 2D the closed form of principalStrain<2>; in 3D Jacobi rotations
-// (JacobiLanes.hpp). The logarithms are the C library's, one lane at a time (Eigen's
-// vectorised logarithm differs from it in the last bits, and GCC 12 warns inside its AVX-512
-// code). Every path runs the same instructions on a point's lane, so a point gives the same
+// Two forms of the same law (docs/theory/plasticity.md §P12): in 3D without principal axes where
+// the isochoric part of be is within the series' range (TensorLanes.hpp: ε = ½ ln be by its
+// series, the return on the tensor's volumetric part and deviator, exp(2ε) by its series), and
+// in principal axes elsewhere, point by point; in 2D in principal axes (their closed form is
+// cheaper than the series there). The principal form: in 2D the closed form of
+// principalStrain<2>; in 3D Jacobi rotations (JacobiLanes.hpp). The logarithms are the C
+// library's, one lane at a time (Eigen's vectorised logarithm differs from it in the last bits,
+// and GCC 12 warns inside its AVX-512 code). Every path runs the same instructions on a point's
+// lane, and which form a point takes depends on its own be only, so a point gives the same
 // digits on every path (test: numericsTests "[lanes]").
 
+#include "materials/plasticity/GatheredLanes.hpp"
 #include "materials/plasticity/JacobiLanes.hpp"
+#include "materials/plasticity/TensorLanes.hpp"
 
 namespace sph
 {
-
-namespace lanes
-{
-
-// out = Σₘ a(k, m) b(m, l), D×D, with a and b read through callables (a lane of an array of
-// lanes, or a plain matrix).
-template <int D, class A, class B>
-inline void multiply(const A& a, const B& b, double (&out)[D][D])
-{
-    for (int k = 0; k < D; ++k)
-    {
-        for (int l = 0; l < D; ++l)
-        {
-            out[k][l] = 0.0;
-            for (int m = 0; m < D; ++m)
-            {
-                out[k][l] += a(k, m) * b(m, l);
-            }
-        }
-    }
-}
-
-// out = Σₘ a(k, m) b(m, l) lane by lane, D×D, a and b returning lanes.
-template <int N, int D, class A, class B>
-inline void multiplyLanes(const A& a, const B& b, Lane<N> (&out)[D][D])
-{
-    for (int k = 0; k < D; ++k)
-    {
-        for (int l = 0; l < D; ++l)
-        {
-            for (int i = 0; i < N; ++i)
-            {
-                double sum = 0.0;
-                for (int m = 0; m < D; ++m)
-                {
-                    sum += a(k, m)[i] * b(m, l)[i];
-                }
-                out[k][l][i] = sum;
-            }
-        }
-    }
-}
-
-// Σₘ values[m] nₘ⊗nₘ of lane i, the directions nₘ the columns of `vectors`.
-template <int N, int D>
-inline void assemble(const Lane<N> (&vectors)[D][D], int i, const Eigen::Vector3d& values,
-                     double (&out)[D][D])
-{
-    for (int k = 0; k < D; ++k)
-    {
-        for (int l = 0; l < D; ++l)
-        {
-            out[k][l] = 0.0;
-            for (int m = 0; m < D; ++m)
-            {
-                out[k][l] += values[m] * vectors[k][m][i] * vectors[l][m][i];
-            }
-        }
-    }
-}
-
-} // namespace lanes
 
 template <int D, class Model>
 template <int N>
@@ -88,103 +33,110 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
                                                   bool wantNext, LanesResult<N>& out) const
 {
     static_assert(D == 2 || D == 3, "the bar (1D) has its own return");
-    constexpr int zz = D * D;                       // 2D: Cp⁻¹_zz's place in a packed state
-    constexpr int alphaAt = State::packedSize - 1; // α's
-    constexpr int pressureAt = State::flowPressureAt;
-    // Gather: F, Cp⁻¹ (all D² components, as a packed state holds them), zz and α. Unused
-    // lanes hold the virgin state at F = I, where every branch is finite.
-    Lane<N> f[D][D], committed[State::packedSize];
-    for (int k = 0; k < D; ++k)
+    const GatheredLanes<D, N, State> in(F, states, stride, count);
+    Lane<N> be[D][D], finv[D][D];
+    in.trialBe(be);
+    in.inverse(finv);
+    Lane<N> withoutAxes = Lane<N>::Zero();
+    if constexpr (D == 3)
     {
-        for (int l = 0; l < D; ++l)
+        if (form_ == LawForm::series)
         {
-            f[k][l] = Lane<N>::Constant(k == l ? 1.0 : 0.0);
+            returnWithoutAxes<N>(in, be, finv, flow, wantNext, out, withoutAxes);
+            if (withoutAxes.minCoeff() != 0.0)
+            {
+                return;
+            }
         }
     }
-    for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
+    // The points beyond the series' range (or every point, when asked): in principal axes.
+    LanesResult<N> inAxes;
+    returnInAxes<N>(in, be, finv, flow, wantNext, inAxes);
+    for (int i = 0; i < N; ++i)
     {
-        const bool unit = c != alphaAt && c != pressureAt && (c == zz || (c < zz && c / D == c % D));
-        committed[c] = Lane<N>::Constant(c == pressureAt ? noFlowPressure : unit ? 1.0 : 0.0);
+        if (withoutAxes[i] == 0.0)
+        {
+            out.copyLane(inAxes, i);
+        }
     }
-    for (std::size_t i = 0; i < count; ++i)
+}
+
+// §P12 (3D): ε = ½ ln be by its series, the return on the tensor's volumetric part and deviator,
+// τ = 2μ dev ε + p 1, exp(2ε) by its series. inRange[i] = 1 where lane i's result is valid.
+template <int D, class Model>
+template <int N>
+void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, State>& in,
+                                                      const Lane<N> (&be)[D][D],
+                                                      const Lane<N> (&finv)[D][D], bool flow,
+                                                      bool wantNext, LanesResult<N>& out,
+                                                      Lane<N>& inRange) const
+{
+    static_assert(D == 3, "in 2D the principal form is closed and cheaper");
+    SymmetricLanes<N> b;
+    b[0] = be[0][0];
+    b[1] = be[1][1];
+    b[2] = be[2][2];
+    b[3] = 0.5 * (be[0][1] + be[1][0]);
+    b[4] = 0.5 * (be[0][2] + be[2][0]);
+    b[5] = 0.5 * (be[1][2] + be[2][1]);
+    StrainLanes<N, 6> strain;
+    tensorLanes::logarithmicStrain<N>(b, strain, inRange);
+
+    returnOrTrial<N, 6>(strain, in.alpha(), in.flowPressure(), flow, out.flow);
+
+    // τ, P = τ F⁻ᵀ (the in-plane block), W and the wave modulus M + max |τᵢ| (P2.5).
+    const DeviatorLanes<N, 6> returned(strain);
+    SymmetricLanes<N> tau;
+    kirchhoffLanes<N, 6>(returned, tau);
+    constexpr int at[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+    lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return tau[at[k][m]]; },
+                               [&](int m, int l) -> const Lane<N>& { return finv[l][m]; }, out.P);
+    out.waveModulus =
+        waveModulusLanes<N, 6>(returned) + tensorLanes::largestAbsoluteEigenvalue<N>(tau);
+    out.energy = elasticEnergyLanes<N, 6>(returned);
+    addExtraEnergy<N>(in.alpha(), out);
+    if (!wantNext)
     {
+        return;
+    }
+    in.keepCommitted(out);
+    if (!(out.flow.deltaGamma.maxCoeff() > 0.0))
+    {
+        return; // nothing flows: every state stays (each lane's result is its own either way)
+    }
+    SymmetricLanes<N> returnedBe;
+    tensorLanes::exponentialOfTwice<N>(returned, returnedBe);
+    for (int i = 0; i < N; ++i)
+    {
+        if (!(out.flow.deltaGamma[i] > 0.0))
+        {
+            continue;
+        }
+        double B[D][D];
         for (int k = 0; k < D; ++k)
         {
             for (int l = 0; l < D; ++l)
             {
-                f[k][l][i] = F[i](k, l);
+                B[k][l] = returnedBe[at[k][l]][i];
             }
         }
-        for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
-        {
-            committed[c][i] = states[i * stride + c];
-        }
+        lanes::writeFlowingState<D, N, State>(finv, B, returnedBe[2][i], out.flow, i, out.next);
     }
-    const Lane<N>& alpha = committed[alphaAt];
+}
 
-    // be = (F Cp⁻¹) Fᵀ. (Each loop over the lanes vectorises.)
-    Lane<N> t[D][D], be[D][D];
-    lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return f[k][m]; },
-                               [&](int m, int l) -> const Lane<N>& { return committed[m * D + l]; },
-                               t);
-    lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return t[k][m]; },
-                               [&](int m, int l) -> const Lane<N>& { return f[l][m]; }, be);
+// §P4 in principal axes: the principal form of be, the return on the principal strains, τ
+// assembled from them, exp of the returned strains.
+template <int D, class Model>
+template <int N>
+void ReturnMapPlasticity<D, Model>::returnInAxes(const GatheredLanes<D, N, State>& in,
+                                                 const Lane<N> (&be)[D][D],
+                                                 const Lane<N> (&finv)[D][D], bool flow,
+                                                 bool wantNext, LanesResult<N>& out) const
+{
     PrincipalLanes<N, D> principal;
-    principalOf<N>(be, committed[D == 2 ? zz : alphaAt], principal);
+    principalOf<N>(be, in.trialZZ(), principal);
 
-    out.flow.pressure = Lane<N>::Constant(noFlowPressure);
-    if (flow)
-    {
-        model().template returnLanes<N>(principal.strain, alpha, committed[pressureAt], out.flow);
-    }
-    else
-    {
-        out.flow.deltaGamma = Lane<N>::Zero();
-        out.flow.alpha = alpha;
-        out.flow.dissipation = Lane<N>::Zero();
-    }
-
-    // F⁻¹ by cofactors (the transposed cofactor matrix over det F).
-    Lane<N> finv[D][D];
-    if constexpr (D == 2)
-    {
-        for (int i = 0; i < N; ++i)
-        {
-            const double invDet = 1.0 / (f[0][0][i] * f[1][1][i] - f[0][1][i] * f[1][0][i]);
-            finv[0][0][i] = f[1][1][i] * invDet;
-            finv[0][1][i] = -f[0][1][i] * invDet;
-            finv[1][0][i] = -f[1][0][i] * invDet;
-            finv[1][1][i] = f[0][0][i] * invDet;
-        }
-    }
-    else
-    {
-        Lane<N> cof[3][3];
-        for (int k = 0; k < 3; ++k)
-        {
-            for (int l = 0; l < 3; ++l)
-            {
-                const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-                const int l1 = (l + 1) % 3, l2 = (l + 2) % 3;
-                for (int i = 0; i < N; ++i)
-                {
-                    cof[k][l][i] = f[k1][l1][i] * f[k2][l2][i] - f[k1][l2][i] * f[k2][l1][i];
-                }
-            }
-        }
-        for (int i = 0; i < N; ++i)
-        {
-            const double invDet = 1.0 / (f[0][0][i] * cof[0][0][i] + f[0][1][i] * cof[0][1][i] +
-                                         f[0][2][i] * cof[0][2][i]);
-            for (int k = 0; k < 3; ++k)
-            {
-                for (int l = 0; l < 3; ++l)
-                {
-                    finv[k][l][i] = cof[l][k][i] * invDet;
-                }
-            }
-        }
-    }
+    returnOrTrial<N, 3>(principal.strain, in.alpha(), in.flowPressure(), flow, out.flow);
 
     // τ, P = S F⁻ᵀ with S = Σ τₖ nₖ⊗nₖ, W and the wave modulus M + max |τ| (P2.5).
     const auto& v = principal.vectors;
@@ -216,54 +168,63 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
             std::max(std::max(std::abs(tau[0][i]), std::abs(tau[1][i])), std::abs(tau[2][i]));
     }
     out.energy = elasticEnergyLanes<N>(returned);
-    for (int i = 0; i < N; ++i)
-    {
-        if (alpha[i] > 0.0 || out.flow.deltaGamma[i] > 0.0)
-        {
-            // Without plastic flow (now or before) the energy stays Hencky's.
-            out.energy[i] += model().extraEnergy(
-                Flow{out.flow.deltaGamma[i], out.flow.alpha[i], out.flow.dissipation[i]});
-        }
-    }
+    addExtraEnergy<N>(in.alpha(), out);
     if (!wantNext)
     {
         return;
     }
 
     // The states to commit: where the point flows the returned be pulled back (§P4 step 4),
-    // elsewhere the committed state; the flow pressure the return's (noFlowPressure where the
-    // point does not flow).
+    // elsewhere the committed state.
+    in.keepCommitted(out);
     for (int i = 0; i < N; ++i)
     {
-        for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
-        {
-            out.next[c][i] = committed[c][i];
-        }
-        out.next[pressureAt][i] = out.flow.pressure[i];
         if (!(out.flow.deltaGamma[i] > 0.0))
         {
             continue;
         }
         const Eigen::Vector3d stretch = (2.0 * principal.strain.point(i)).array().exp();
-        // Cp⁻¹ = (F⁻¹ B) F⁻ᵀ with B = Σ exp(2εₖ) nₖ⊗nₖ, then ½ (C + Cᵀ).
-        double B[D][D], T[D][D], C[D][D];
+        // B = Σ exp(2εₖ) nₖ⊗nₖ.
+        double B[D][D];
         lanes::assemble<N, D>(v, i, stretch, B);
-        lanes::multiply<D>([&](int k, int m) { return finv[k][m][i]; },
-                           [&](int m, int l) { return B[m][l]; }, T);
-        lanes::multiply<D>([&](int k, int m) { return T[k][m]; },
-                           [&](int m, int l) { return finv[l][m][i]; }, C);
-        for (int k = 0; k < D; ++k)
+        lanes::writeFlowingState<D, N, State>(finv, B, stretch[2], out.flow, i, out.next);
+    }
+}
+
+// The model's return of the trial strains (returned in place), or with flow = false the trial
+// itself: no flow, α kept.
+template <int D, class Model>
+template <int N, int C>
+void ReturnMapPlasticity<D, Model>::returnOrTrial(StrainLanes<N, C>& strain, const Lane<N>& alpha,
+                                                  const Lane<N>& flowPressure, bool flow,
+                                                  FlowLanes<N>& out) const
+{
+    out.pressure = Lane<N>::Constant(noFlowPressure);
+    if (flow)
+    {
+        model().template returnLanes<N, C>(strain, alpha, flowPressure, out);
+    }
+    else
+    {
+        out.deltaGamma = Lane<N>::Zero();
+        out.alpha = alpha;
+        out.dissipation = Lane<N>::Zero();
+    }
+}
+
+// W − Ψ(εe) where a point has flowed (now or before); without plastic flow the energy stays
+// Hencky's.
+template <int D, class Model>
+template <int N>
+void ReturnMapPlasticity<D, Model>::addExtraEnergy(const Lane<N>& alpha, LanesResult<N>& out) const
+{
+    for (int i = 0; i < N; ++i)
+    {
+        if (alpha[i] > 0.0 || out.flow.deltaGamma[i] > 0.0)
         {
-            for (int l = 0; l < D; ++l)
-            {
-                out.next[k * D + l][i] = k == l ? C[k][k] : 0.5 * (C[k][l] + C[l][k]);
-            }
+            out.energy[i] += model().extraEnergy(
+                Flow{out.flow.deltaGamma[i], out.flow.alpha[i], out.flow.dissipation[i]});
         }
-        if constexpr (D == 2)
-        {
-            out.next[zz][i] = stretch[2];
-        }
-        out.next[alphaAt][i] = out.flow.alpha[i];
     }
 }
 

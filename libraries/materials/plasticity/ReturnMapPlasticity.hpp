@@ -36,6 +36,16 @@
 namespace sph
 {
 
+template <int D, int N, class State> struct GatheredLanes; // ReturnMapLanes.hpp
+
+// Which form of the logarithmic law a return takes (docs/theory/plasticity.md §P12): the key
+// `logarithm` of every return-map material.
+enum class LawForm
+{
+    series,       // without principal axes where the series applies, in principal axes elsewhere
+    principalAxes // in principal axes everywhere (§P4: the law before §P12, for comparison)
+};
+
 template <int D, class Model>
 class ReturnMapPlasticity : public Material<D>
 {
@@ -55,6 +65,8 @@ public:
     };
     // flow = false: the trial state (the elastic predictor) only.
     Result returnMap(const Mat<D>& F, const State& committed, bool wantNext, bool flow = true) const;
+    // The keys every return-map material shares (`logarithm`, §P12).
+    static Schema lawSchema();
     double energy(const Mat<D>& F) const override { return returnMap(F, {}, false).energy; }
     Mat<D> stress(const Mat<D>& F) const override { return returnMap(F, {}, false).P; }
     double waveSpeed(const Mat<D>& F) const override
@@ -133,6 +145,7 @@ protected:
 
     IsotropicElasticity elastic_;
     HenckyLaw law_;
+    LawForm form_;
 
 private:
     const Model& model() const { return static_cast<const Model&>(*this); }
@@ -198,6 +211,19 @@ private:
     template <int N>
     void returnInLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count,
                        bool flow, bool wantNext, LanesResult<N>& out) const;
+    // Its two forms (§P12 and §P4) from the gathered points, their trial be and F⁻¹.
+    template <int N>
+    void returnWithoutAxes(const GatheredLanes<D, N, State>& in, const Lane<N> (&be)[D][D],
+                           const Lane<N> (&finv)[D][D], bool flow, bool wantNext,
+                           LanesResult<N>& out, Lane<N>& inRange) const;
+    template <int N>
+    void returnInAxes(const GatheredLanes<D, N, State>& in, const Lane<N> (&be)[D][D],
+                      const Lane<N> (&finv)[D][D], bool flow, bool wantNext,
+                      LanesResult<N>& out) const;
+    template <int N, int C>
+    void returnOrTrial(StrainLanes<N, C>& strain, const Lane<N>& alpha, const Lane<N>& flowPressure,
+                       bool flow, FlowLanes<N>& out) const;
+    template <int N> void addExtraEnergy(const Lane<N>& alpha, LanesResult<N>& out) const;
     // The principal form of N matrices be (in 2D with their zz components).
     template <int N>
     static void principalOf(const Lane<N> (&be)[D][D], const Lane<N>& beZZ, PrincipalLanes<N, D>& out);
@@ -236,9 +262,25 @@ private:
 };
 
 template <int D, class Model>
+Schema ReturnMapPlasticity<D, Model>::lawSchema()
+{
+    return Schema().add(
+        Key::word("logarithm",
+                  "how the elastic strain 1/2 ln be is computed in 3D: series (by its series, "
+                  "without principal axes, where the elastic shear strain is below about 2.5 %; "
+                  "in principal axes elsewhere) or principalAxes (always in principal axes, the "
+                  "law before; the same results to round-off, slower). 2D always uses the "
+                  "principal axes' closed form, which is cheaper there; "
+                  "docs/theory/plasticity.md §P12")
+            .choices({"series", "principalAxes"})
+            .defaultValue("series"));
+}
+
+template <int D, class Model>
 ReturnMapPlasticity<D, Model>::ReturnMapPlasticity(const Params& params,
                                                    const typename Material<D>::Args& args)
     : Material<D>(params), elastic_(IsotropicElasticity::read<D>(params)), law_(elastic_),
+      form_(params.word("logarithm") == "principalAxes" ? LawForm::principalAxes : LawForm::series),
       history_(args), memo_(history_.registry())
 {
     if (args.F && args.fields)

@@ -1,0 +1,222 @@
+#pragma once
+// The algebra the return map in lanes is written in (ReturnMapLanes.hpp): D×D products of
+// lanes, the gathered inputs of N points (F and their packed committed states, the trial be,
+// F⁻¹) and the state a flowing point commits.
+
+#include "materials/plasticity/PlasticHistory.hpp"
+#include "materials/plasticity/ReturnLanes.hpp"
+
+#include <Eigen/Core>
+
+namespace sph
+{
+
+namespace lanes
+{
+
+// out = Σₘ a(k, m) b(m, l), D×D, with a and b read through callables (a lane of an array of
+// lanes, or a plain matrix).
+template <int D, class A, class B>
+inline void multiply(const A& a, const B& b, double (&out)[D][D])
+{
+    for (int k = 0; k < D; ++k)
+    {
+        for (int l = 0; l < D; ++l)
+        {
+            out[k][l] = 0.0;
+            for (int m = 0; m < D; ++m)
+            {
+                out[k][l] += a(k, m) * b(m, l);
+            }
+        }
+    }
+}
+
+// out = Σₘ a(k, m) b(m, l) lane by lane, D×D, a and b returning lanes.
+template <int N, int D, class A, class B>
+inline void multiplyLanes(const A& a, const B& b, Lane<N> (&out)[D][D])
+{
+    for (int k = 0; k < D; ++k)
+    {
+        for (int l = 0; l < D; ++l)
+        {
+            for (int i = 0; i < N; ++i)
+            {
+                double sum = 0.0;
+                for (int m = 0; m < D; ++m)
+                {
+                    sum += a(k, m)[i] * b(m, l)[i];
+                }
+                out[k][l][i] = sum;
+            }
+        }
+    }
+}
+
+// Σₘ values[m] nₘ⊗nₘ of lane i, the directions nₘ the columns of `vectors`.
+template <int N, int D>
+inline void assemble(const Lane<N> (&vectors)[D][D], int i, const Eigen::Vector3d& values,
+                     double (&out)[D][D])
+{
+    for (int k = 0; k < D; ++k)
+    {
+        for (int l = 0; l < D; ++l)
+        {
+            out[k][l] = 0.0;
+            for (int m = 0; m < D; ++m)
+            {
+                out[k][l] += values[m] * vectors[k][m][i] * vectors[l][m][i];
+            }
+        }
+    }
+}
+
+} // namespace lanes
+
+// The inputs of N points: F and the packed committed states (Cp⁻¹ with all D² components, as
+// a packed state holds them, zz in 2D, the flow pressure and α). Unused lanes hold the virgin
+// state at F = I, where every branch is finite.
+template <int D, int N, class State>
+struct GatheredLanes
+{
+    static constexpr int zz = D * D;                       // 2D: Cp⁻¹_zz's place in a packed state
+    static constexpr int alphaAt = State::packedSize - 1; // α's
+    static constexpr int pressureAt = State::flowPressureAt;
+    Lane<N> f[D][D];
+    Lane<N> committed[State::packedSize];
+
+    GatheredLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count)
+    {
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                f[k][l] = Lane<N>::Constant(k == l ? 1.0 : 0.0);
+            }
+        }
+        for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
+        {
+            const bool unit =
+                c != alphaAt && c != pressureAt && (c == zz || (c < zz && c / D == c % D));
+            committed[c] = Lane<N>::Constant(c == pressureAt ? noFlowPressure : unit ? 1.0 : 0.0);
+        }
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            for (int k = 0; k < D; ++k)
+            {
+                for (int l = 0; l < D; ++l)
+                {
+                    f[k][l][i] = F[i](k, l);
+                }
+            }
+            for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
+            {
+                committed[c][i] = states[i * stride + c];
+            }
+        }
+    }
+    const Lane<N>& alpha() const { return committed[alphaAt]; }
+    // The states to commit before any flow is written in: the committed ones, with the flow
+    // pressure of the return (noFlowPressure where the point does not flow).
+    template <class Result> void keepCommitted(Result& out) const
+    {
+        for (int i = 0; i < N; ++i)
+        {
+            for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
+            {
+                out.next[c][i] = committed[c][i];
+            }
+            out.next[pressureAt][i] = out.flow.pressure[i];
+        }
+    }
+    const Lane<N>& flowPressure() const { return committed[pressureAt]; }
+    // be_zz in 2D (Cp⁻¹_zz: F has no zz part).
+    const Lane<N>& trialZZ() const { return committed[D == 2 ? zz : alphaAt]; }
+
+    // be = (F Cp⁻¹) Fᵀ, the trial's elastic left Cauchy–Green tensor (in-plane in 2D). (Each
+    // loop over the lanes vectorises.)
+    void trialBe(Lane<N> (&be)[D][D]) const
+    {
+        Lane<N> t[D][D];
+        lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return f[k][m]; },
+                                   [&](int m, int l) -> const Lane<N>& { return committed[m * D + l]; },
+                                   t);
+        lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return t[k][m]; },
+                                   [&](int m, int l) -> const Lane<N>& { return f[l][m]; }, be);
+    }
+    // F⁻¹ by cofactors (the transposed cofactor matrix over det F).
+    void inverse(Lane<N> (&finv)[D][D]) const
+    {
+        if constexpr (D == 2)
+        {
+            for (int i = 0; i < N; ++i)
+            {
+                const double invDet = 1.0 / (f[0][0][i] * f[1][1][i] - f[0][1][i] * f[1][0][i]);
+                finv[0][0][i] = f[1][1][i] * invDet;
+                finv[0][1][i] = -f[0][1][i] * invDet;
+                finv[1][0][i] = -f[1][0][i] * invDet;
+                finv[1][1][i] = f[0][0][i] * invDet;
+            }
+        }
+        else
+        {
+            Lane<N> cof[3][3];
+            for (int k = 0; k < 3; ++k)
+            {
+                for (int l = 0; l < 3; ++l)
+                {
+                    const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+                    const int l1 = (l + 1) % 3, l2 = (l + 2) % 3;
+                    for (int i = 0; i < N; ++i)
+                    {
+                        cof[k][l][i] = f[k1][l1][i] * f[k2][l2][i] - f[k1][l2][i] * f[k2][l1][i];
+                    }
+                }
+            }
+            for (int i = 0; i < N; ++i)
+            {
+                const double invDet = 1.0 / (f[0][0][i] * cof[0][0][i] + f[0][1][i] * cof[0][1][i] +
+                                             f[0][2][i] * cof[0][2][i]);
+                for (int k = 0; k < 3; ++k)
+                {
+                    for (int l = 0; l < 3; ++l)
+                    {
+                        finv[k][l][i] = cof[l][k][i] * invDet;
+                    }
+                }
+            }
+        }
+    }
+};
+
+namespace lanes
+{
+
+// The state to commit at lane i of a point that flows: Cp⁻¹ = (F⁻¹ B) F⁻ᵀ, ½ (C + Cᵀ), with B
+// the returned be (in-plane), zz = the returned be_zz (2D), α and the flow pressure of the return.
+template <int D, int N, class State>
+inline void writeFlowingState(const Lane<N> (&finv)[D][D], const double (&B)[D][D], double beZZ,
+                              const FlowLanes<N>& flow, int i, Lane<N>* next)
+{
+    double T[D][D], C[D][D];
+    multiply<D>([&](int k, int m) { return finv[k][m][i]; }, [&](int m, int l) { return B[m][l]; },
+                T);
+    multiply<D>([&](int k, int m) { return T[k][m]; }, [&](int m, int l) { return finv[l][m][i]; },
+                C);
+    for (int k = 0; k < D; ++k)
+    {
+        for (int l = 0; l < D; ++l)
+        {
+            next[k * D + l][i] = k == l ? C[k][k] : 0.5 * (C[k][l] + C[l][k]);
+        }
+    }
+    if constexpr (D == 2)
+    {
+        next[D * D][i] = beZZ;
+    }
+    next[State::packedSize - 1][i] = flow.alpha[i];
+}
+
+} // namespace lanes
+
+} // namespace sph
