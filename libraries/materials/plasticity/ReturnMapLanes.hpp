@@ -30,7 +30,8 @@ template <int D, class Model>
 template <int N>
 void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double* states,
                                                   std::size_t stride, std::size_t count, bool flow,
-                                                  bool wantNext, LanesResult<N>& out) const
+                                                  bool wantNext, LanesResult<N>& out,
+                                                  bool wantWaveModulus) const
 {
     static_assert(D == 2 || D == 3, "the bar (1D) has its own return");
     const GatheredLanes<D, N, State> in(F, states, stride, count);
@@ -42,7 +43,7 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     {
         if (form_ == LawForm::series)
         {
-            returnWithoutAxes<N>(in, be, finv, flow, wantNext, out, withoutAxes);
+            returnWithoutAxes<N>(in, be, finv, flow, wantNext, wantWaveModulus, out, withoutAxes);
             if (withoutAxes.minCoeff() != 0.0)
             {
                 return;
@@ -51,7 +52,7 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     }
     // The points beyond the series' range (or every point, when asked): in principal axes.
     LanesResult<N> inAxes;
-    returnInAxes<N>(in, be, finv, flow, wantNext, inAxes);
+    returnInAxes<N>(in, be, finv, flow, wantNext, wantWaveModulus, inAxes);
     for (int i = 0; i < N; ++i)
     {
         if (withoutAxes[i] == 0.0)
@@ -68,8 +69,8 @@ template <int N>
 void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, State>& in,
                                                       const Lane<N> (&be)[D][D],
                                                       const Lane<N> (&finv)[D][D], bool flow,
-                                                      bool wantNext, LanesResult<N>& out,
-                                                      Lane<N>& inRange) const
+                                                      bool wantNext, bool wantWaveModulus,
+                                                      LanesResult<N>& out, Lane<N>& inRange) const
 {
     static_assert(D == 3, "in 2D the principal form is closed and cheaper");
     SymmetricLanes<N> b;
@@ -92,7 +93,9 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
     lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return tau[at[k][m]]; },
                                [&](int m, int l) -> const Lane<N>& { return finv[l][m]; }, out.P);
     out.waveModulus =
-        waveModulusLanes<N, 6>(returned) + tensorLanes::largestAbsoluteEigenvalue<N>(tau);
+        wantWaveModulus
+            ? Lane<N>(waveModulusLanes<N, 6>(returned) + tensorLanes::largestAbsoluteEigenvalue<N>(tau))
+            : Lane<N>::Zero();
     out.energy = elasticEnergyLanes<N, 6>(returned);
     addExtraEnergy<N>(in.alpha(), out);
     if (!wantNext)
@@ -131,7 +134,8 @@ template <int N>
 void ReturnMapPlasticity<D, Model>::returnInAxes(const GatheredLanes<D, N, State>& in,
                                                  const Lane<N> (&be)[D][D],
                                                  const Lane<N> (&finv)[D][D], bool flow,
-                                                 bool wantNext, LanesResult<N>& out) const
+                                                 bool wantNext, bool wantWaveModulus,
+                                                 LanesResult<N>& out) const
 {
     PrincipalLanes<N, D> principal;
     principalOf<N>(be, in.trialZZ(), principal);
@@ -160,12 +164,16 @@ void ReturnMapPlasticity<D, Model>::returnInAxes(const GatheredLanes<D, N, State
     }
     lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return S[k][m]; },
                                [&](int m, int l) -> const Lane<N>& { return finv[l][m]; }, out.P);
-    const Lane<N> modulus = waveModulusLanes<N>(returned);
-    for (int i = 0; i < N; ++i)
+    out.waveModulus = Lane<N>::Zero();
+    if (wantWaveModulus)
     {
-        out.waveModulus[i] =
-            modulus[i] +
-            std::max(std::max(std::abs(tau[0][i]), std::abs(tau[1][i])), std::abs(tau[2][i]));
+        const Lane<N> modulus = waveModulusLanes<N>(returned);
+        for (int i = 0; i < N; ++i)
+        {
+            out.waveModulus[i] =
+                modulus[i] +
+                std::max(std::max(std::abs(tau[0][i]), std::abs(tau[1][i])), std::abs(tau[2][i]));
+        }
     }
     out.energy = elasticEnergyLanes<N>(returned);
     addExtraEnergy<N>(in.alpha(), out);

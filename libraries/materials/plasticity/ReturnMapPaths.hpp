@@ -111,7 +111,8 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
     {
         const bool wantNext = history.next != nullptr;
         LanesResult<lanes> out;
-        returnInLanes<lanes>(F, history.states, history.stride, count, true, wantNext, out);
+        // A sample's wave modulus is never read (the time step takes the particles').
+        returnInLanes<lanes>(F, history.states, history.stride, count, true, wantNext, out, false);
         for (std::size_t i = 0; i < count; ++i)
         {
             const int lane = static_cast<int>(i);

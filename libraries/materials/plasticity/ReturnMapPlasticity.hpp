@@ -210,16 +210,18 @@ private:
     using LanesResult = sph::LanesResult<D, N>;
     template <int N>
     void returnInLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count,
-                       bool flow, bool wantNext, LanesResult<N>& out) const;
-    // Its two forms (§P12 and §P4) from the gathered points, their trial be and F⁻¹.
+                       bool flow, bool wantNext, LanesResult<N>& out,
+                       bool wantWaveModulus = true) const;
+    // Its two forms (§P12 and §P4) from the gathered points, their trial be and F⁻¹ (the wave
+    // modulus only where asked: a gradF sample's is never read).
     template <int N>
     void returnWithoutAxes(const GatheredLanes<D, N, State>& in, const Lane<N> (&be)[D][D],
                            const Lane<N> (&finv)[D][D], bool flow, bool wantNext,
-                           LanesResult<N>& out, Lane<N>& inRange) const;
+                           bool wantWaveModulus, LanesResult<N>& out, Lane<N>& inRange) const;
     template <int N>
     void returnInAxes(const GatheredLanes<D, N, State>& in, const Lane<N> (&be)[D][D],
                       const Lane<N> (&finv)[D][D], bool flow, bool wantNext,
-                      LanesResult<N>& out) const;
+                      bool wantWaveModulus, LanesResult<N>& out) const;
     template <int N, int C>
     void returnOrTrial(StrainLanes<N, C>& strain, const Lane<N>& alpha, const Lane<N>& flowPressure,
                        bool flow, FlowLanes<N>& out) const;
