@@ -7,10 +7,11 @@
 // what is its own, as non-virtual members of Model (CRTP: the return is inlined in the loops
 // over eight points side by side, ReturnMapLanes.hpp, that every return runs through):
 //
-//   template <int N> void returnLanes(StrainLanes<N>& eps, const Lane<N>& alpha,
-//       const Lane<N>& flowPressure, FlowLanes<N>& flow) const;  2D/3D: the return in
-//       principal log strains at N points side by side (ReturnLanes.hpp; eps: trial in,
-//       returned out; alpha: the committed α; flowPressure: the committed state's)
+//   template <int N, int C> void returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha,
+//       const Lane<N>& flowPressure, FlowLanes<N>& flow) const;  2D/3D: the return at N points
+//       side by side (ReturnLanes.hpp), on principal log strains (C = 3) or on the strain
+//       tensor (C = 6, §P12: the 3D law without principal axes); eps: trial in, returned out;
+//       alpha: the committed α; flowPressure: the committed state's
 //   static constexpr bool keepsFlowPressure: whether the model sets flow.pressure (its
 //       states then keep it, one number more in each compact state)
 //   Flow returnUniaxial(double& eps, double alpha) const;            1D bar (only if the
@@ -18,12 +19,13 @@
 //   double extraEnergy(const Flow& flow) const;   W − Ψ(εe) when the point has flowed (now or
 //       before): the stored hardening energy plus the step's dissipation
 //   double dissipated(double V0, const Flow& flow) const;  what a commit books, V0 ΔD
-//   optional, over N points from their strains' volumetric and deviatoric parts (DeviatorLanes):
-//       template <int N> void kirchhoffLanesOf(e, Lane<N> (&tau)[3]) const,
-//       template <int N> Lane<N> elasticEnergyLanesOf(e) const and
-//       template <int N> Lane<N> waveModulusLanesOf(e) const: an elastic law of the model's
-//       own in place of Hencky's (druckerPrager: no volumetric stress beyond its tensile
-//       strength, §P9)
+//   optional, over N points from their strains' volumetric and deviatoric parts (DeviatorLanes,
+//       C components as above):
+//       template <int N, int C> void kirchhoffLanesOf(e, Lane<N> (&tau)[C]) const,
+//       template <int N, int C> Lane<N> elasticEnergyLanesOf(e) const and
+//       template <int N, int C> Lane<N> waveModulusLanesOf(e) const: an elastic law of the
+//       model's own in place of Hencky's (druckerPrager: no volumetric stress beyond its
+//       tensile strength, §P9)
 //
 // Without plastic flow (now or before) the energy and the stress are `hencky`'s to round-off.
 
