@@ -85,7 +85,7 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
 
     returnOrTrial<N, 6>(strain, in.alpha(), in.flowPressure(), flow, out.flow);
 
-    // τ, P = τ F⁻ᵀ (the in-plane block), W and the wave modulus M + max |τᵢ| (P2.5).
+    // τ, P = τ F⁻ᵀ, W and the wave modulus M + max |τᵢ| (P2.5).
     const DeviatorLanes<N, 6> returned(strain);
     SymmetricLanes<N> tau;
     kirchhoffLanes<N, 6>(returned, tau);
