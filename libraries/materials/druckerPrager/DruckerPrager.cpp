@@ -69,8 +69,9 @@ ConeMatching::Cone ConeMatching::of(Kind kind, double phi, double psi)
 template <int D> std::string DruckerPrager<D>::description()
 {
     return "Finite-strain Drucker-Prager plasticity (friction, cohesion, dilatancy, tension "
-           "cut-off), perfectly plastic: F = Fe Fp, Hencky elasticity, cone/apex return in "
-           "principal log strains (docs/theory/plasticity.md §P9); 2D plane strain and 3D.";
+           "cut-off), perfectly plastic: F = Fe Fp, Hencky elasticity, cone/apex return on the "
+           "log strain (principal axes; in 3D by its series where the elastic strain is small, "
+           "key logarithm, §P12; docs/theory/plasticity.md §P9); 2D plane strain and 3D.";
 }
 
 template <int D> Schema DruckerPrager<D>::schema()

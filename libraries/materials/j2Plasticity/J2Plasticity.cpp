@@ -9,8 +9,9 @@ template <int D>
 std::string J2Plasticity<D>::description()
 {
     return "Finite-strain von Mises plasticity, linear isotropic hardening: F = Fe Fp, Hencky "
-           "elasticity, radial return in principal log strains (docs/theory/plasticity.md); 2D "
-           "plane strain, 1D uniaxial stress.";
+           "elasticity, radial return on the log strain (principal axes; in 3D by its series "
+           "where the elastic strain is small, key logarithm; docs/theory/plasticity.md §P12); "
+           "2D plane strain, 1D uniaxial stress.";
 }
 
 template <int D>
