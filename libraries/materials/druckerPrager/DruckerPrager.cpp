@@ -70,8 +70,9 @@ template <int D> std::string DruckerPrager<D>::description()
 {
     return "Finite-strain Drucker-Prager plasticity (friction, cohesion, dilatancy, tension "
            "cut-off), perfectly plastic: F = Fe Fp, Hencky elasticity, cone/apex return on the "
-           "log strain (principal axes; in 3D by its series where the elastic strain is small, "
-           "key logarithm, §P12; docs/theory/plasticity.md §P9); 2D plane strain and 3D.";
+           "log strain (without principal axes: in 3D by its series where the elastic strain is "
+           "small, in 2D in closed form; key logarithm, §P12-§P13; docs/theory/plasticity.md "
+           "§P9); 2D plane strain and 3D.";
 }
 
 template <int D> Schema DruckerPrager<D>::schema()

@@ -9,8 +9,9 @@ template <int D>
 std::string J2Plasticity<D>::description()
 {
     return "Finite-strain von Mises plasticity, linear isotropic hardening: F = Fe Fp, Hencky "
-           "elasticity, radial return on the log strain (principal axes; in 3D by its series "
-           "where the elastic strain is small, key logarithm; docs/theory/plasticity.md §P12); "
+           "elasticity, radial return on the log strain (without principal axes: in 3D by its "
+           "series where the elastic strain is small, in 2D in closed form; key logarithm; "
+           "docs/theory/plasticity.md §P12-§P13); "
            "2D plane strain, 1D uniaxial stress.";
 }
 

@@ -8,19 +8,21 @@
 //   the model's return;  τ(ε);  P = (Σ τᵢ nᵢ⊗nᵢ) F⁻ᵀ;  W = Ψ(ε) (+ the model's extra energy
 //   once the point has flowed);  flowing: Cp⁻¹ = F⁻¹ (Σ exp(2εᵢ) nᵢ⊗nᵢ) F⁻ᵀ, symmetrised (and
 //   in 2D be_zz = exp(2ε₂)).
-// Two forms of the same law (docs/theory/plasticity.md §P12): in 3D without principal axes where
-// the isochoric part of be is within the series' range (TensorLanes.hpp: ε = ½ ln be by its
-// series, the return on the tensor's volumetric part and deviator, exp(2ε) by its series), and
-// in principal axes elsewhere, point by point; in 2D in principal axes (their closed form is
-// cheaper than the series there). The principal form: in 2D the closed form of
-// principalStrain<2>; in 3D Jacobi rotations (JacobiLanes.hpp). The logarithms are the C
-// library's, one lane at a time (Eigen's vectorised logarithm differs from it in the last bits,
-// and GCC 12 warns inside its AVX-512 code). Every path runs the same instructions on a point's
+// Two forms of the same law (docs/theory/plasticity.md §P12–§P13): without principal axes (the
+// return on the tensor's volumetric part and deviator) — in 3D where the isochoric part of be is
+// within the series' range (TensorLanes.hpp: ε = ½ ln be and exp(2ε) by their series), in
+// principal axes elsewhere, point by point; in 2D everywhere, in closed form (PlaneLanes.hpp:
+// one polynomial for the logarithms and the shape) — and, with `logarithm principalAxes`, in
+// principal axes everywhere: in 2D the closed form of principalStrain<2>, in 3D Jacobi rotations
+// (JacobiLanes.hpp), with the C library's logarithms one lane at a time (Eigen's vectorised
+// logarithm differs from it in the last bits, and GCC 12 warns inside its AVX-512 code). Every
+// path runs the same instructions on a point's
 // lane, and which form a point takes depends on its own be only, so a point gives the same
 // digits on every path (test: numericsTests "[lanes]").
 
 #include "materials/plasticity/GatheredLanes.hpp"
 #include "materials/plasticity/JacobiLanes.hpp"
+#include "materials/plasticity/PlaneLanes.hpp"
 #include "materials/plasticity/TensorLanes.hpp"
 
 namespace sph
@@ -39,15 +41,12 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     in.trialBe(be);
     in.inverse(finv);
     Lane<N> withoutAxes = Lane<N>::Zero();
-    if constexpr (D == 3)
+    if (form_ == LawForm::series)
     {
-        if (form_ == LawForm::series)
+        returnWithoutAxes<N>(in, be, finv, flow, wantNext, wantWaveModulus, out, withoutAxes);
+        if (withoutAxes.minCoeff() != 0.0)
         {
-            returnWithoutAxes<N>(in, be, finv, flow, wantNext, wantWaveModulus, out, withoutAxes);
-            if (withoutAxes.minCoeff() != 0.0)
-            {
-                return;
-            }
+            return;
         }
     }
     // The points beyond the series' range (or every point, when asked): in principal axes.
@@ -62,8 +61,9 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     }
 }
 
-// §P12 (3D): ε = ½ ln be by its series, the return on the tensor's volumetric part and deviator,
-// τ = 2μ dev ε + p 1, exp(2ε) by its series. inRange[i] = 1 where lane i's result is valid.
+// §P12 (3D) and §P13 (2D): ε = ½ ln be without axes, the return on the tensor's volumetric part
+// and deviator, τ = 2μ dev ε + p 1, exp(2ε) back. inRange[i] = 1 where lane i's result is valid
+// (in 2D every lane).
 template <int D, class Model>
 template <int N>
 void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, State>& in,
@@ -72,16 +72,23 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
                                                       bool wantNext, bool wantWaveModulus,
                                                       LanesResult<N>& out, Lane<N>& inRange) const
 {
-    static_assert(D == 3, "in 2D the principal form is closed and cheaper");
-    SymmetricLanes<N> b;
-    b[0] = be[0][0];
-    b[1] = be[1][1];
-    b[2] = be[2][2];
-    b[3] = 0.5 * (be[0][1] + be[1][0]);
-    b[4] = 0.5 * (be[0][2] + be[2][0]);
-    b[5] = 0.5 * (be[1][2] + be[2][1]);
     StrainLanes<N, 6> strain;
-    tensorLanes::logarithmicStrain<N>(b, strain, inRange);
+    if constexpr (D == 2)
+    {
+        planeLanes::logarithmicStrain<N>(be, in.trialZZ(), strain); // §P13: every point
+        inRange = Lane<N>::Ones();
+    }
+    else
+    {
+        SymmetricLanes<N> b;
+        b[0] = be[0][0];
+        b[1] = be[1][1];
+        b[2] = be[2][2];
+        b[3] = 0.5 * (be[0][1] + be[1][0]);
+        b[4] = 0.5 * (be[0][2] + be[2][0]);
+        b[5] = 0.5 * (be[1][2] + be[2][1]);
+        tensorLanes::logarithmicStrain<N>(b, strain, inRange);
+    }
 
     returnOrTrial<N, 6>(strain, in.alpha(), in.flowPressure(), flow, out.flow);
 
@@ -92,10 +99,21 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
     constexpr int at[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
     lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return tau[at[k][m]]; },
                                [&](int m, int l) -> const Lane<N>& { return finv[l][m]; }, out.P);
-    out.waveModulus =
-        wantWaveModulus
-            ? Lane<N>(waveModulusLanes<N, 6>(returned) + tensorLanes::largestAbsoluteEigenvalue<N>(tau))
-            : Lane<N>::Zero();
+    if (wantWaveModulus)
+    {
+        if constexpr (D == 2)
+        {
+            out.waveModulus = waveModulusLanes<N, 6>(returned) + planeLanes::largestAbsolutePrincipal<N>(tau);
+        }
+        else
+        {
+            out.waveModulus = waveModulusLanes<N, 6>(returned) + tensorLanes::largestAbsoluteEigenvalue<N>(tau);
+        }
+    }
+    else
+    {
+        out.waveModulus = Lane<N>::Zero();
+    }
     out.energy = elasticEnergyLanes<N, 6>(returned);
     addExtraEnergy<N>(in.alpha(), out);
     if (!wantNext)
@@ -107,23 +125,38 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
     {
         return; // nothing flows: every state stays (each lane's result is its own either way)
     }
-    SymmetricLanes<N> returnedBe;
-    tensorLanes::exponentialOfTwice<N>(returned, returnedBe);
-    for (int i = 0; i < N; ++i)
+    if constexpr (D == 2)
     {
-        if (!(out.flow.deltaGamma[i] > 0.0))
+        for (int i = 0; i < N; ++i)
         {
-            continue;
-        }
-        double B[D][D];
-        for (int k = 0; k < D; ++k)
-        {
-            for (int l = 0; l < D; ++l)
+            if (out.flow.deltaGamma[i] > 0.0)
             {
-                B[k][l] = returnedBe[at[k][l]][i];
+                double B[2][2], beZZ;
+                planeLanes::exponentialOfTwice<N>(returned, i, B, beZZ);
+                lanes::writeFlowingState<D, N, State>(finv, B, beZZ, out.flow, i, out.next);
             }
         }
-        lanes::writeFlowingState<D, N, State>(finv, B, returnedBe[2][i], out.flow, i, out.next);
+    }
+    else
+    {
+        SymmetricLanes<N> returnedBe;
+        tensorLanes::exponentialOfTwice<N>(returned, returnedBe);
+        for (int i = 0; i < N; ++i)
+        {
+            if (!(out.flow.deltaGamma[i] > 0.0))
+            {
+                continue;
+            }
+            double B[D][D];
+            for (int k = 0; k < D; ++k)
+            {
+                for (int l = 0; l < D; ++l)
+                {
+                    B[k][l] = returnedBe[at[k][l]][i];
+                }
+            }
+            lanes::writeFlowingState<D, N, State>(finv, B, returnedBe[2][i], out.flow, i, out.next);
+        }
     }
 }
 

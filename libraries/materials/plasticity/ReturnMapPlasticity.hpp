@@ -10,7 +10,7 @@
 //   template <int N, int C> void returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha,
 //       const Lane<N>& flowPressure, FlowLanes<N>& flow) const;  2D/3D: the return at N points
 //       side by side (ReturnLanes.hpp), on principal log strains (C = 3) or on the strain
-//       tensor (C = 6, §P12: the 3D law without principal axes); eps: trial in, returned out;
+//       tensor (C = 6, §P12–§P13: the law without principal axes); eps: trial in, returned out;
 //       alpha: the committed α; flowPressure: the committed state's
 //   static constexpr bool keepsFlowPressure: whether the model sets flow.pressure (its
 //       states then keep it, one number more in each compact state)
@@ -44,7 +44,8 @@ template <int D, int N, class State> struct GatheredLanes; // ReturnMapLanes.hpp
 // `logarithm` of every return-map material.
 enum class LawForm
 {
-    series,       // without principal axes where the series applies, in principal axes elsewhere
+    series,       // without principal axes: 3D where the series applies (in principal axes
+                  // elsewhere), 2D everywhere in closed form (§P13)
     principalAxes // in principal axes everywhere (§P4: the law before §P12, for comparison)
 };
 
@@ -214,7 +215,7 @@ private:
     void returnInLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count,
                        bool flow, bool wantNext, LanesResult<N>& out,
                        bool wantWaveModulus = true) const;
-    // Its two forms (§P12 and §P4) from the gathered points, their trial be and F⁻¹ (the wave
+    // Its two forms (§P12–§P13 and §P4) from the gathered points, their trial be and F⁻¹ (the wave
     // modulus only where asked: a gradF sample's is never read).
     template <int N>
     void returnWithoutAxes(const GatheredLanes<D, N, State>& in, const Lane<N> (&be)[D][D],
@@ -272,10 +273,10 @@ Schema ReturnMapPlasticity<D, Model>::lawSchema()
         Key::word("logarithm",
                   "how the elastic strain 1/2 ln be is computed in 3D: series (by its series, "
                   "without principal axes, where the elastic shear strain is below about 2.5 %; "
-                  "in principal axes elsewhere) or principalAxes (always in principal axes, the "
-                  "law before; the same results to round-off, slower). 2D always uses the "
-                  "principal axes' closed form, which is cheaper there; "
-                  "docs/theory/plasticity.md §P12")
+                  "in principal axes elsewhere; in 2D in closed form without axes everywhere, "
+                  "§P13) or principalAxes (always in principal axes, the "
+                  "law before; the same results to round-off, slower); "
+                  "docs/theory/plasticity.md §P12-§P13")
             .choices({"series", "principalAxes"})
             .defaultValue("series"));
 }

@@ -2,8 +2,8 @@
 // The logarithmic law without principal axes in 3D (docs/theory/plasticity.md §P12), N points
 // side by side: the strain ε = ½ ln be of a symmetric be near a dilation, exp(2ε) back, and the
 // largest |principal value| of a symmetric matrix. A symmetric 3×3 is held as six lanes (00, 11,
-// 22, 01, 02, 12). (In 2D the principal form is closed, one square root, and cheaper than the
-// series: ReturnMapLanes.hpp keeps it there.)
+// 22, 01, 02, 12). (In 2D the law has a closed form without axes, cheaper than the series:
+// PlaneLanes.hpp.)
 
 #include "materials/plasticity/ReturnLanes.hpp"
 

@@ -6,8 +6,7 @@
 //   - `logarithm series` (the default) against `logarithm principalAxes` (the law of §P4) on the
 //     same random 3D points of j2Plasticity and druckerPrager, elastic and flowing, on the cone,
 //     the apex and the cut-off: stresses, energies, dissipation, committed states and wave
-//     speeds to round-off; a point beyond the series' range bit for bit, and 2D (where the
-//     principal form is kept) bit for bit;
+//     speeds to round-off; a point beyond the series' range bit for bit (2D, §P13: PlaneLawTest);
 //   - objectivity of the series form: F → QF rotates P and changes no scalar.
 #include "numerics/PlasticPoints.hpp"
 
@@ -185,83 +184,10 @@ TEST_CASE("tensor law: the largest |principal value|, also at double and triple 
 namespace
 {
 using test::Body;
+using test::compareTheForms;
 using test::RandomPoints;
 using test::sameBits;
-
-// The same points through `logarithm series` and `logarithm principalAxes`: as stress samples
-// (P, W, the states to commit, the dissipation) and as particles (the wave speed). Returns
-// the number of points that flow.
-template <int D>
-std::size_t compareTheForms(const std::string& materialText, const Mat<D>& centre,
-                            double amplitude, std::size_t count, unsigned seed,
-                            bool uniaxial = false)
-{
-    constexpr std::size_t stride = PlasticState<D>::packedSize;
-    const RandomPoints<D> points(centre, amplitude, count, seed, uniaxial);
-    struct Evaluated
-    {
-        std::vector<Mat<D>> P;
-        std::vector<double> psi, next, dissipation, speed;
-    };
-    const auto evaluate = [&](const std::string& form)
-    {
-        Body<D> body(materialText + " logarithm " + form + ";", points);
-        Evaluated e{std::vector<Mat<D>>(count), std::vector<double>(count),
-                    std::vector<double>(count * stride), std::vector<double>(count),
-                    std::vector<double>(count)};
-        body.material->evaluate(points.F.data(), e.P.data(), e.psi.data(), count,
-                                HistoryOf::samples(points.states.data(), stride, e.next.data(),
-                                                   e.dissipation.data()));
-        for (std::size_t i = 0; i < count; ++i)
-        {
-            e.speed[i] = body.material->maxWaveSpeed(&points.F[i], 1, i);
-        }
-        return e;
-    };
-    const Evaluated series = evaluate("series");
-    const Evaluated axes = evaluate("principalAxes");
-    std::size_t flowing = 0;
-    for (std::size_t i = 0; i < count; ++i)
-    {
-        INFO("point " << i << " of " << count);
-        // The tolerance 1e-10: where a sand's return is the small difference of √J2 and η p, both
-        // forms' round-off (of order 1e-16 of each) is amplified alike; elsewhere they agree to
-        // about 1e-15.
-        const double scale = axes.P[i].norm() + 1e-300;
-        CHECK((series.P[i] - axes.P[i]).norm() <= 1e-10 * scale);
-        // (Energies at the apex of a cohesionless cone are round-off: 1e-48 J/m³ and the like.)
-        CHECK(std::abs(series.psi[i] - axes.psi[i]) <= 1e-10 * std::abs(axes.psi[i]) + 1e-12);
-        CHECK(std::abs(series.dissipation[i] - axes.dissipation[i]) <=
-              1e-10 * std::abs(axes.dissipation[i]) + 1e-12);
-        CHECK(std::abs(series.speed[i] - axes.speed[i]) <= 1e-10 * axes.speed[i]);
-        for (std::size_t k = 0; k < stride; ++k)
-        {
-            const double a = axes.next[i * stride + k], b = series.next[i * stride + k];
-            if (k == PlasticState<D>::flowPressureAt)
-            {
-                CHECK(std::abs(a - b) <= 1e-10 * std::abs(a) + 1e-15 * scale);
-            }
-            else
-            {
-                CHECK(std::abs(a - b) <= 1e-12 * (std::abs(a) + 1.0));
-            }
-        }
-        flowing += axes.dissipation[i] != 0.0 ||
-                           !std::equal(&axes.next[i * stride], &axes.next[i * stride] + D * D,
-                                       &points.states[i * stride])
-                       ? 1
-                       : 0;
-    }
-    return flowing;
-}
-
-const std::string dp = "type druckerPrager; E 7.2e6; nu 0.2; rho 2000; frictionAngle 30; "
-                       "dilatancyAngle 10; cohesion 1e4;";
-const std::string sand = "type druckerPrager; E 0.84e6; nu 0.3; rho 2650; frictionAngle 19.8; "
-                         "cohesion 0;";
-const std::string copper = "type j2Plasticity; E 117e9; nu 0.35; rho 8930; yieldStress 400e6; "
-                           "hardeningModulus 100e6;";
-
+using namespace test::plasticMaterials;
 } // namespace
 
 TEST_CASE("tensor law: druckerPrager in series form is its principal-axes law to round-off",
@@ -302,16 +228,6 @@ TEST_CASE("tensor law: a point beyond the series' range takes the principal axes
     // ... and inside it the two differ (so the check above is not vacuous).
     F(0, 1) = 0.01;
     CHECK(!sameBits(series.stress(F), axes.stress(F)));
-    // In 2D the principal form is kept: bit for bit, yielded or not.
-    test::MaterialPoint<2> series2(copper);
-    test::MaterialPoint<2> axes2(copper + " logarithm principalAxes;");
-    for (const double shear : {0.001, 0.01})
-    {
-        Mat<2> F2 = Mat<2>::Identity();
-        F2(0, 1) = shear;
-        CHECK(sameBits(series2.stress(F2), axes2.stress(F2)));
-        CHECK(sameBits(series2.commit(F2), axes2.commit(F2)));
-    }
 }
 
 TEST_CASE("tensor law: a rotation of a yielded point rotates its stress and changes no scalar",

@@ -1,0 +1,153 @@
+#pragma once
+// The plane-strain logarithmic law in closed form, without principal axes
+// (docs/theory/plasticity.md §P13), N points side by side: ε = ½ ln be of an in-plane 2×2 block
+// and its zz component from one polynomial, A(s) = atanh(√s)/√s, evaluated in lanes (no call to
+// the C library where its series applies), exp(2ε) back for a flowing point, and the largest
+// |principal value| of a plane-strain stress. The strain is held as §P12's six components of a
+// symmetric 3×3 (00, 11, 22, 01, 02, 12), the out-of-plane shears zero.
+
+#include "materials/plasticity/ReturnLanes.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sph
+{
+
+namespace planeLanes
+{
+
+// (P13.2): A(s) to `seriesTerms` terms where s ≤ seriesRange; the terms left out are then
+// below 7e-19 of A ≥ 1.
+constexpr double seriesRange = 1.0 / 49.0;
+constexpr int seriesTerms = 10;
+
+// A(s) = Σ_{k<n} s^k/(2k + 1) by Horner, valid (to round-off) for s ≤ seriesRange.
+template <int N>
+[[gnu::always_inline]] inline Lane<N> atanhSeries(const Lane<N>& s)
+{
+    Lane<N> sum = Lane<N>::Constant(1.0 / (2 * seriesTerms - 1));
+    for (int k = seriesTerms - 2; k >= 0; --k)
+    {
+        sum = sum * s + 1.0 / (2 * k + 1);
+    }
+    return sum;
+}
+
+// ln y of the lanes where (P13.2)'s series does not apply (t² beyond seriesRange, a NaN
+// included), by the C library.
+template <int N>
+inline void logarithmBeyondSeries(const Lane<N>& y, const Lane<N>& t2, Lane<N>& result)
+{
+    if ((t2 <= seriesRange).all())
+    {
+        return; // the common case: one vector comparison
+    }
+    for (int i = 0; i < N; ++i)
+    {
+        if (!(t2[i] <= seriesRange))
+        {
+            result[i] = std::log(y[i]);
+        }
+    }
+}
+
+// ln y lane by lane (P13.2): 2t A(t²) with t = (y − 1)/(y + 1) where t² ≤ seriesRange
+// (y ∈ [3/4, 4/3]), the C library's elsewhere.
+template <int N>
+inline Lane<N> logarithm(const Lane<N>& y)
+{
+    const Lane<N> t = (y - 1.0) / (y + 1.0);
+    const Lane<N> t2 = t * t;
+    Lane<N> result = 2.0 * t * atanhSeries<N>(t2);
+    logarithmBeyondSeries<N>(y, t2, result);
+    return result;
+}
+
+// (P13.1): ε = ½ ln be of N plane-strain be (the in-plane block b, symmetrised, and be_zz).
+// The three series (ln det b, ln be_zz and the shape's A(x²)) are independent chains of
+// multiply-adds, written side by side so that they overlap; each is atanhSeries' Horner sum.
+template <int N>
+void logarithmicStrain(const Lane<N> (&be)[2][2], const Lane<N>& beZZ, StrainLanes<N, 6>& strain)
+{
+    const Lane<N> b01 = 0.5 * (be[0][1] + be[1][0]);
+    const Lane<N> m = 0.5 * (be[0][0] + be[1][1]);
+    const Lane<N> d = 0.5 * (be[0][0] - be[1][1]);
+    const Lane<N> det = be[0][0] * be[1][1] - b01 * b01;
+    const Lane<N> x2 = (d * d + b01 * b01) / (m * m); // (r/m)²
+    const Lane<N> tDet = (det - 1.0) / (det + 1.0);
+    const Lane<N> tZZ = (beZZ - 1.0) / (beZZ + 1.0);
+    const Lane<N> t2Det = tDet * tDet;
+    const Lane<N> t2ZZ = tZZ * tZZ;
+    Lane<N> shape = Lane<N>::Constant(1.0 / (2 * seriesTerms - 1));
+    Lane<N> seriesDet = shape, seriesZZ = shape;
+    for (int k = seriesTerms - 2; k >= 0; --k)
+    {
+        const double coefficient = 1.0 / (2 * k + 1);
+        shape = shape * x2 + coefficient;
+        seriesDet = seriesDet * t2Det + coefficient;
+        seriesZZ = seriesZZ * t2ZZ + coefficient;
+    }
+    Lane<N> lnDet = 2.0 * tDet * seriesDet;
+    Lane<N> lnZZ = 2.0 * tZZ * seriesZZ;
+    logarithmBeyondSeries<N>(det, t2Det, lnDet);
+    logarithmBeyondSeries<N>(beZZ, t2ZZ, lnZZ);
+    if (!(x2 <= seriesRange).all())
+    {
+        for (int i = 0; i < N; ++i)
+        {
+            if (!(x2[i] <= seriesRange))
+            {
+                const double x = std::sqrt(x2[i]);
+                shape[i] = std::atanh(x) / x;
+            }
+        }
+    }
+    const Lane<N> volume = 0.25 * lnDet;
+    const Lane<N> scale = shape / (2.0 * m); // ½ atanh(x)/r
+    strain.eps[0] = volume + scale * d;
+    strain.eps[1] = volume - scale * d;
+    strain.eps[2] = 0.5 * lnZZ;
+    strain.eps[3] = scale * b01;
+    strain.eps[4] = Lane<N>::Zero();
+    strain.eps[5] = Lane<N>::Zero();
+}
+
+// (P13.3): be = exp(2ε) of lane i's returned strain: the in-plane block B and be_zz.
+template <int N>
+void exponentialOfTwice(const DeviatorLanes<N, 6>& strain, int i, double (&B)[2][2], double& beZZ)
+{
+    const double third = strain.volumetric[i] / 3.0;
+    const double a = 0.5 * (strain.dev[0][i] + strain.dev[1][i]) + third;
+    const double d = 0.5 * (strain.dev[0][i] - strain.dev[1][i]);
+    const double c = strain.dev[3][i];
+    const double rho = std::sqrt(d * d + c * c);
+    const double dilation = std::exp(2.0 * a);
+    const double diagonal = dilation * std::cosh(2.0 * rho);
+    const double shape = dilation * (rho > 0.0 ? std::sinh(2.0 * rho) / rho : 2.0);
+    B[0][0] = diagonal + shape * d;
+    B[1][1] = diagonal - shape * d;
+    B[0][1] = shape * c;
+    B[1][0] = B[0][1];
+    beZZ = std::exp(2.0 * (strain.dev[2][i] + third));
+}
+
+// maxᵢ |τᵢ| of N plane-strain stresses held as six components: the in-plane block's principal
+// values, mean ± radius, and τ_zz.
+template <int N>
+Lane<N> largestAbsolutePrincipal(const Lane<N> (&tau)[6])
+{
+    Lane<N> result;
+    for (int i = 0; i < N; ++i)
+    {
+        const double mean = 0.5 * (tau[0][i] + tau[1][i]);
+        const double half = 0.5 * (tau[0][i] - tau[1][i]);
+        const double radius = std::sqrt(half * half + tau[3][i] * tau[3][i]);
+        result[i] = std::max(std::abs(mean) + radius, std::abs(tau[2][i]));
+    }
+    return result;
+}
+
+} // namespace planeLanes
+
+} // namespace sph
