@@ -38,7 +38,7 @@ inline void rotate(Lane<N> (&a)[6], Lane<N> (&v)[3][3], const Lane<N>& done)
         const double rotation =
             std::copysign(1.0, theta) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
         // A lane already converged (done ≠ 0) stays as it is to the bit: t = 0 and a_pq kept,
-        // so that a point gives the same digits in any batch (one lane or eight).
+        // so that a point gives the same digits in any batch (one lane or sixteen).
         const bool keep = x == 0.0 || done[i] != 0.0;
         const double t = keep ? 0.0 : rotation;
         const double c = 1.0 / std::sqrt(t * t + 1.0);

@@ -1,5 +1,5 @@
 #pragma once
-// ReturnMapPlasticity's return map at eight points side by side (ReturnLanes.hpp); the paths
+// ReturnMapPlasticity's return map at `lanes` (16) points side by side (ReturnLanes.hpp); the paths
 // that use it are in ReturnMapPaths.hpp. Included at the end of ReturnMapPlasticity.hpp, whose
 // members it defines.
 //

@@ -5,7 +5,7 @@
 // evaluation from a particle's or a gradF sample's committed history (HistoryOf), the commit,
 // the linearised correction, the wave-speed bound and the display fields. A model adds only
 // what is its own, as non-virtual members of Model (CRTP: the return is inlined in the loops
-// over eight points side by side, ReturnMapLanes.hpp, that every return runs through):
+// over sixteen points side by side, ReturnMapLanes.hpp, that every return runs through):
 //
 //   template <int N, int C> void returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha,
 //       const Lane<N>& flowPressure, FlowLanes<N>& flow) const;  2D/3D: the return at N points
@@ -232,12 +232,17 @@ private:
     // The principal form of N matrices be (in 2D with their zz components).
     template <int N>
     static void principalOf(const Lane<N> (&be)[D][D], const Lane<N>& beZZ, PrincipalLanes<N, D>& out);
-    // evaluate's two paths, eight points at a time from `first` (i in evaluate).
+    // evaluate's two paths, `lanes` points at a time from `first` (i in evaluate).
     void evaluateParticlesInLanes(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t count,
                                   std::size_t firstParticle) const;
     void evaluateSamplesInLanes(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t count,
                                 const HistoryOf& history) const;
-    static constexpr std::size_t lanes = 8; // one AVX-512 register of doubles
+    // Two AVX-512 registers of doubles per quantity: the return is chains of divisions and
+    // square roots that wait on each other, and two independent registers keep the units busy
+    // (the rings' TL gradF row 16 % faster than with eight lanes, 3D within the noise;
+    // docs/performance.md). The library is built without fused multiply-adds
+    // (-ffp-contract=off, CMakeLists.txt), so that every width computes a lane alike.
+    static constexpr std::size_t lanes = 16;
 
     // The memo of each particle's last return: the time step and the commit reuse the force
     // evaluation's (written by the one thread that evaluates the particle).
@@ -246,7 +251,7 @@ private:
     // the memo does not hold are computed together, in one set of lanes.
     void particleReturns(const Mat<D>* F, std::size_t first, std::size_t n,
                          typename ReturnMemo<D>::Entry* out) const;
-    // visit(i, entry) for the particles first + i, i < n, at F[i], eight at a time.
+    // visit(i, entry) for the particles first + i, i < n, at F[i], `lanes` at a time.
     template <class Visit>
     void visitParticleReturns(const Mat<D>* F, std::size_t first, std::size_t n, Visit visit) const
     {
@@ -329,12 +334,11 @@ ReturnMapPlasticity<D, Model>::returnMap(const Mat<D>& F, const State& committed
     }
     else
     {
-        // The point in the first of eight lanes (the others idle): every return of a point
-        // runs the same instructions on its lane, one point or eight, so a point gives the
-        // same digits whichever path evaluates it (the memo and restarts rely on it; a
-        // one-lane instantiation would not: the compiler fuses multiply-adds differently in
-        // scalar and vector code). In 3D eight lanes of Jacobi rotations cost about what the
-        // one-point eigen-solver did.
+        // The point in the first of `lanes` lanes (the others idle): every return of a point
+        // runs the same instructions on its lane, one point or sixteen, so a point gives the
+        // same digits whichever path evaluates it (the memo and restarts rely on it). (A
+        // one-lane instantiation would too now that the library fuses no multiply-adds, but
+        // one instantiation is one code to trust.)
         double packed[State::packedSize];
         committed.pack(packed);
         LanesResult<lanes> one;
