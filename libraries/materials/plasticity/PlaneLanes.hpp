@@ -6,7 +6,7 @@
 // |principal value| of a plane-strain stress. The strain is held as §P12's six components of a
 // symmetric 3×3 (00, 11, 22, 01, 02, 12), the out-of-plane shears zero.
 
-#include "materials/plasticity/ReturnLanes.hpp"
+#include "materials/plasticity/LaneFunctions.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,56 +17,13 @@ namespace sph
 namespace planeLanes
 {
 
-// (P13.2): A(s) to `seriesTerms` terms where s ≤ seriesRange; the terms left out are then
-// below 7e-19 of A ≥ 1.
-constexpr double seriesRange = 1.0 / 49.0;
-constexpr int seriesTerms = 10;
-
-// A(s) = Σ_{k<n} s^k/(2k + 1) by Horner, valid (to round-off) for s ≤ seriesRange.
-template <int N>
-[[gnu::always_inline]] inline Lane<N> atanhSeries(const Lane<N>& s)
-{
-    Lane<N> sum = Lane<N>::Constant(1.0 / (2 * seriesTerms - 1));
-    for (int k = seriesTerms - 2; k >= 0; --k)
-    {
-        sum = sum * s + 1.0 / (2 * k + 1);
-    }
-    return sum;
-}
-
-// ln y of the lanes where (P13.2)'s series does not apply (t² beyond seriesRange, a NaN
-// included), by the C library.
-template <int N>
-inline void logarithmBeyondSeries(const Lane<N>& y, const Lane<N>& t2, Lane<N>& result)
-{
-    if ((t2 <= seriesRange).all())
-    {
-        return; // the common case: one vector comparison
-    }
-    for (int i = 0; i < N; ++i)
-    {
-        if (!(t2[i] <= seriesRange))
-        {
-            result[i] = std::log(y[i]);
-        }
-    }
-}
-
-// ln y lane by lane (P13.2): 2t A(t²) with t = (y − 1)/(y + 1) where t² ≤ seriesRange
-// (y ∈ [3/4, 4/3]), the C library's elsewhere.
-template <int N>
-inline Lane<N> logarithm(const Lane<N>& y)
-{
-    const Lane<N> t = (y - 1.0) / (y + 1.0);
-    const Lane<N> t2 = t * t;
-    Lane<N> result = 2.0 * t * atanhSeries<N>(t2);
-    logarithmBeyondSeries<N>(y, t2, result);
-    return result;
-}
+using laneFunctions::seriesRange;
+using laneFunctions::seriesTerms;
 
 // (P13.1): ε = ½ ln be of N plane-strain be (the in-plane block b, symmetrised, and be_zz).
 // The three series (ln det b, ln be_zz and the shape's A(x²)) are independent chains of
-// multiply-adds, written side by side so that they overlap; each is atanhSeries' Horner sum.
+// multiply-adds, written side by side so that they overlap; each is laneFunctions::atanhSeries'
+// Horner sum.
 template <int N>
 void logarithmicStrain(const Lane<N> (&be)[2][2], const Lane<N>& beZZ, StrainLanes<N, 6>& strain)
 {
@@ -90,8 +47,8 @@ void logarithmicStrain(const Lane<N> (&be)[2][2], const Lane<N>& beZZ, StrainLan
     }
     Lane<N> lnDet = 2.0 * tDet * seriesDet;
     Lane<N> lnZZ = 2.0 * tZZ * seriesZZ;
-    logarithmBeyondSeries<N>(det, t2Det, lnDet);
-    logarithmBeyondSeries<N>(beZZ, t2ZZ, lnZZ);
+    laneFunctions::logarithmBeyondSeries<N>(det, t2Det, lnDet);
+    laneFunctions::logarithmBeyondSeries<N>(beZZ, t2ZZ, lnZZ);
     if (!(x2 <= seriesRange).all())
     {
         for (int i = 0; i < N; ++i)

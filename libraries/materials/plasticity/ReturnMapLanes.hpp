@@ -44,7 +44,7 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     if (form_ == LawForm::series)
     {
         returnWithoutAxes<N>(in, be, finv, flow, wantNext, wantWaveModulus, out, withoutAxes);
-        if (withoutAxes.minCoeff() != 0.0)
+        if ((withoutAxes != 0.0).all())
         {
             return;
         }
@@ -121,7 +121,7 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
         return;
     }
     in.keepCommitted(out);
-    if (!(out.flow.deltaGamma.maxCoeff() > 0.0))
+    if (!(out.flow.deltaGamma > 0.0).any())
     {
         return; // nothing flows: every state stays (each lane's result is its own either way)
     }

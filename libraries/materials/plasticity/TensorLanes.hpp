@@ -5,7 +5,7 @@
 // 22, 01, 02, 12). (In 2D the law has a closed form without axes, cheaper than the series:
 // PlaneLanes.hpp.)
 
-#include "materials/plasticity/ReturnLanes.hpp"
+#include "materials/plasticity/LaneFunctions.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -50,6 +50,46 @@ inline Lane<N> squaredNorm(const SymmetricLanes<N>& a)
     return a[0] * a[0] + a[1] * a[1] + a[2] * a[2] + 2.0 * (a[3] * a[3] + a[4] * a[4] + a[5] * a[5]);
 }
 
+// A polynomial in a symmetric 3×3 a, held as α 1 + β a + γ a² (P12.5): by Cayley–Hamilton,
+// a³ = I1 a² − I2 a + I3 1 with a's invariants, so a Horner step of a matrix series is a step
+// on three numbers per point instead of a product of matrices.
+template <int N>
+struct PolynomialLanes
+{
+    Lane<N> alpha, beta, gamma;
+    Lane<N> I1, I2, I3; // a's invariants
+
+    explicit PolynomialLanes(const SymmetricLanes<N>& a)
+        : alpha(Lane<N>::Zero()), beta(Lane<N>::Zero()), gamma(Lane<N>::Zero())
+    {
+        I1 = a[0] + a[1] + a[2];
+        I2 = a[0] * a[1] + a[1] * a[2] + a[0] * a[2] - a[3] * a[3] - a[4] * a[4] - a[5] * a[5];
+        I3 = a[0] * (a[1] * a[2] - a[5] * a[5]) - a[3] * (a[3] * a[2] - a[5] * a[4]) +
+             a[4] * (a[3] * a[5] - a[1] * a[4]);
+    }
+    // p ← a p.
+    [[gnu::always_inline]] void multiplyByA()
+    {
+        const Lane<N> g = gamma;
+        gamma = beta + g * I1;
+        beta = alpha - g * I2;
+        alpha = g * I3;
+    }
+    // The matrix α 1 + β a + γ a² (aSquared = a²).
+    void assemble(const SymmetricLanes<N>& a, const SymmetricLanes<N>& aSquared,
+                  SymmetricLanes<N>& out) const
+    {
+        for (int c = 0; c < 6; ++c)
+        {
+            out[c] = beta * a[c] + gamma * aSquared[c];
+            if (c < 3)
+            {
+                out[c] += alpha;
+            }
+        }
+    }
+};
+
 // (P12.1)–(P12.2): ε = ½ ln be of N symmetric positive-definite be, as a strain of six
 // components (ReturnLanes.hpp). inRange[i] = 1 where the series
 // applies (|b̄ − 1|_F ≤ seriesRange and det be > 0), 0 elsewhere (ε is then not meaningful).
@@ -63,15 +103,9 @@ void logarithmicStrain(const SymmetricLanes<N>& be, StrainLanes<N, 6>& strain, L
                  be[3][i] * (be[3][i] * be[2][i] - be[5][i] * be[4][i]) +
                  be[4][i] * (be[3][i] * be[5][i] - be[1][i] * be[4][i]);
     }
-    Lane<N> volumetric, scale;
-    for (int i = 0; i < N; ++i)
-    {
-        volumetric[i] = det[i] > 0.0 ? 0.5 * std::log(det[i]) : 0.0;
-    }
-    for (int i = 0; i < N; ++i)
-    {
-        scale[i] = std::exp(volumetric[i] * (-2.0 / 3.0)); // (det be)^(−1/3)
-    }
+    // εv = ½ ln det be and (det be)^(−1/3) = exp(−⅔ εv) by their series (P12.6).
+    const Lane<N> volumetric = (det > 0.0).select(0.5 * laneFunctions::logarithm<N>(det), 0.0);
+    const Lane<N> scale = laneFunctions::exponential<N>(volumetric * (-2.0 / 3.0));
     SymmetricLanes<N> e;
     for (int c = 0; c < 6; ++c)
     {
@@ -83,27 +117,19 @@ void logarithmicStrain(const SymmetricLanes<N>& be, StrainLanes<N, 6>& strain, L
         const bool ok = det[i] > 0.0 && size[i] <= seriesRange * seriesRange;
         inRange[i] = ok ? 1.0 : 0.0;
     }
-    // Q = Σ_{j<n} (−1)^j e^j/(j+1) by Horner, from the highest power down.
-    SymmetricLanes<N> q, next;
-    for (int c = 0; c < 6; ++c)
-    {
-        q[c] = Lane<N>::Constant(c < 3 ? ((logDegree - 1) % 2 == 0 ? 1.0 : -1.0) / logDegree : 0.0);
-    }
+    // Q = Σ_{j<n} (−1)^j e^j/(j+1) by Horner, from the highest power down, and ln b̄ = e Q(e),
+    // in the algebra of e (P12.5).
+    PolynomialLanes<N> q(e);
+    q.alpha = Lane<N>::Constant(((logDegree - 1) % 2 == 0 ? 1.0 : -1.0) / logDegree);
     for (int j = logDegree - 2; j >= 0; --j)
     {
-        multiplyCommuting<N>(e, q, next);
-        const double coefficient = (j % 2 == 0 ? 1.0 : -1.0) / (j + 1);
-        for (int c = 0; c < 6; ++c)
-        {
-            q[c] = next[c];
-            if (c < 3)
-            {
-                q[c] += coefficient;
-            }
-        }
+        q.multiplyByA();
+        q.alpha += (j % 2 == 0 ? 1.0 : -1.0) / (j + 1);
     }
-    SymmetricLanes<N> logarithm; // ln b̄ = e Q(e)
-    multiplyCommuting<N>(e, q, logarithm);
+    q.multiplyByA();
+    SymmetricLanes<N> eSquared, logarithm;
+    multiplyCommuting<N>(e, e, eSquared);
+    q.assemble(e, eSquared, logarithm);
     for (int i = 0; i < N; ++i)
     {
         // tr ln b̄ = 0 up to round-off: the deviator is taken explicitly.
@@ -122,33 +148,26 @@ void logarithmicStrain(const SymmetricLanes<N>& be, StrainLanes<N, 6>& strain, L
 template <int N>
 void exponentialOfTwice(const DeviatorLanes<N, 6>& strain, SymmetricLanes<N>& be)
 {
-    SymmetricLanes<N> x, sum, product;
+    SymmetricLanes<N> x, xSquared, sum;
     for (int c = 0; c < 6; ++c)
     {
         x[c] = 2.0 * strain.dev[c];
     }
-    // exp(x) = 1 + x (1 + x/2 (1 + x/3 (… (1 + x/n)))), from the innermost bracket out.
-    for (int c = 0; c < 6; ++c)
-    {
-        sum[c] = Lane<N>::Constant(c < 3 ? 1.0 : 0.0);
-    }
+    // exp(x) = 1 + x (1 + x/2 (1 + x/3 (… (1 + x/n)))), from the innermost bracket out, in the
+    // algebra of x (P12.5).
+    PolynomialLanes<N> p(x);
+    p.alpha = Lane<N>::Ones();
     for (int k = expDegree; k >= 1; --k)
     {
-        multiplyCommuting<N>(x, sum, product);
-        for (int c = 0; c < 6; ++c)
-        {
-            sum[c] = product[c] / k;
-            if (c < 3)
-            {
-                sum[c] += 1.0;
-            }
-        }
+        p.multiplyByA();
+        p.alpha /= k;
+        p.beta /= k;
+        p.gamma /= k;
+        p.alpha += 1.0;
     }
-    Lane<N> dilation;
-    for (int i = 0; i < N; ++i)
-    {
-        dilation[i] = std::exp(strain.volumetric[i] * (2.0 / 3.0));
-    }
+    multiplyCommuting<N>(x, x, xSquared);
+    p.assemble(x, xSquared, sum);
+    const Lane<N> dilation = laneFunctions::exponential<N>(strain.volumetric * (2.0 / 3.0));
     for (int c = 0; c < 6; ++c)
     {
         be[c] = sum[c] * dilation;

@@ -1,6 +1,6 @@
 // The plane-strain logarithmic law in closed form without axes (docs/theory/plasticity.md §P13,
-// libraries/materials/plasticity/PlaneLanes.hpp):
-//   - ln y and the strain ε = ½ ln be against the C library and Eigen's eigen-solver, in the
+// libraries/materials/plasticity/PlaneLanes.hpp, LaneFunctions.hpp):
+//   - ln y and exp y against the C library on both branches; the strain ε = ½ ln be against the C library and Eigen's eigen-solver, in the
 //     series' range and beyond it (where the C library's log and atanh take over), at a double
 //     eigenvalue (be a dilation) and at be = 1 exactly; exp(2ε) back to be;
 //   - the largest |principal value| of a plane-strain stress;
@@ -15,6 +15,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <limits>
 #include <numbers>
 
 using namespace sph;
@@ -60,7 +61,7 @@ TEST_CASE("plane law: ln y by the series and by the C library", "[tensorLaw]")
         {
             y[i] = 0.5 * std::pow(4.0, (j * N + i) / (64.0 * N - 1.0));
         }
-        const Lane<N> value = planeLanes::logarithm<N>(y);
+        const Lane<N> value = laneFunctions::logarithm<N>(y);
         for (int i = 0; i < N; ++i)
         {
             INFO("y = " << y[i]);
@@ -70,14 +71,40 @@ TEST_CASE("plane law: ln y by the series and by the C library", "[tensorLaw]")
         }
     }
     CHECK(seriesPoints > 100);
-    CHECK(planeLanes::logarithm<N>(Lane<N>::Ones()).isZero(0.0)); // ln 1 = 0 exactly
+    CHECK(laneFunctions::logarithm<N>(Lane<N>::Ones()).isZero(0.0)); // ln 1 = 0 exactly
     // Not positive: the C library's −inf and NaN, as the principal form gave.
     Lane<N> bad = Lane<N>::Ones();
     bad[1] = 0.0;
     bad[2] = -1.0;
-    const Lane<N> logs = planeLanes::logarithm<N>(bad);
+    const Lane<N> logs = laneFunctions::logarithm<N>(bad);
     CHECK(std::isinf(logs[1]));
     CHECK(std::isnan(logs[2]));
+}
+
+TEST_CASE("lane functions: exp y by the series and by the C library", "[tensorLaw]")
+{
+    // y from −0.5 to 0.5: both branches (the series for |y| ≤ 1/8).
+    int seriesPoints = 0;
+    for (int j = 0; j < 64; ++j)
+    {
+        Lane<N> y;
+        for (int i = 0; i < N; ++i)
+        {
+            y[i] = -0.5 + (j * N + i) / (64.0 * N - 1.0);
+        }
+        const Lane<N> value = laneFunctions::exponential<N>(y);
+        for (int i = 0; i < N; ++i)
+        {
+            INFO("y = " << y[i]);
+            CHECK(std::abs(value[i] - std::exp(y[i])) <= 3e-16 * std::exp(y[i])); // ~1 ulp
+            seriesPoints += std::abs(y[i]) <= laneFunctions::expRange ? 1 : 0;
+        }
+    }
+    CHECK(seriesPoints > 100);
+    CHECK(laneFunctions::exponential<N>(Lane<N>::Zero()).isOnes(0.0)); // exp 0 = 1 exactly
+    Lane<N> nan = Lane<N>::Zero();
+    nan[3] = std::numeric_limits<double>::quiet_NaN();
+    CHECK(std::isnan(laneFunctions::exponential<N>(nan)[3]));
 }
 
 TEST_CASE("plane law: the strain is ½ ln be of the principal axes, and exp(2ε) is be", "[tensorLaw]")
