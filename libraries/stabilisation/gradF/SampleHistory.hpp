@@ -41,8 +41,8 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -339,9 +339,16 @@ private:
     static constexpr StatePool::Index fromOwner = StatePool::none - 3;
     static bool isRecord(StatePool::Index slot) { return slot < fromOwner; }
 
+    // (A loop over the numbers' bits, not memcmp: a state is a few numbers, compared for every
+    // sample at every evaluation, and the library call cost more than the comparison.)
     static bool sameBits(const double* x, const double* y, std::size_t n)
     {
-        return std::memcmp(x, y, n * sizeof(double)) == 0;
+        std::uint64_t difference = 0;
+        for (std::size_t k = 0; k < n; ++k)
+        {
+            difference |= std::bit_cast<std::uint64_t>(x[k]) ^ std::bit_cast<std::uint64_t>(y[k]);
+        }
+        return difference == 0;
     }
     bool sameBits(const double* x, const double* y) const { return sameBits(x, y, stride_); }
     bool isInitial(const double* state) const { return sameBits(state, initial_.data()); }
