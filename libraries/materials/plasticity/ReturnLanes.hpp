@@ -82,7 +82,7 @@ struct DeviatorLanes
     Lane<N> dev[C];
     Lane<N> norm;
 
-    explicit DeviatorLanes(const StrainLanes<N, C>& s)
+    [[gnu::always_inline]] explicit DeviatorLanes(const StrainLanes<N, C>& s)
     {
         for (int i = 0; i < N; ++i)
         {
