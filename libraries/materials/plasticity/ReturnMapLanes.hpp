@@ -1,7 +1,7 @@
 #pragma once
-// ReturnMapPlasticity's return map at `lanes` (16) points side by side (ReturnLanes.hpp); the paths
-// that use it are in ReturnMapPaths.hpp. Included at the end of ReturnMapPlasticity.hpp, whose
-// members it defines.
+// ReturnMapPlasticity's return map at `lanes` (16) points side by side (ReturnLanes.hpp); the
+// paths that use it are in ReturnMapPaths.hpp. Included at the end of ReturnMapPlasticity.hpp,
+// whose members it defines.
 //
 // Per lane, as docs/theory/plasticity.md §P1–§P4 write it:
 //   be = F Cp⁻¹ Fᵀ (in-plane; in 2D be_zz = Cp⁻¹_zz) = Σ λᵢ² nᵢ⊗nᵢ;  εᵢ = ½ ln λᵢ²;
@@ -16,9 +16,8 @@
 // principal axes everywhere: in 2D the closed form of principalStrain<2>, in 3D Jacobi rotations
 // (JacobiLanes.hpp), with the C library's logarithms one lane at a time (Eigen's vectorised
 // logarithm differs from it in the last bits, and GCC 12 warns inside its AVX-512 code). Every
-// path runs the same instructions on a point's
-// lane, and which form a point takes depends on its own be only, so a point gives the same
-// digits on every path (test: numericsTests "[lanes]").
+// path runs the same instructions on a point's lane, and which form a point takes depends on its
+// own be only, so a point gives the same digits on every path (test: numericsTests "[lanes]").
 
 #include "materials/plasticity/GatheredLanes.hpp"
 #include "materials/plasticity/JacobiLanes.hpp"
@@ -99,20 +98,19 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
     constexpr int at[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
     lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return tau[at[k][m]]; },
                                [&](int m, int l) -> const Lane<N>& { return finv[l][m]; }, out.P);
+    out.waveModulus = Lane<N>::Zero();
     if (wantWaveModulus)
     {
+        // M + max |τᵢ| (P2.5): in 2D in closed form, in 3D by the deviator's cubic.
         if constexpr (D == 2)
         {
-            out.waveModulus = waveModulusLanes<N, 6>(returned) + planeLanes::largestAbsolutePrincipal<N>(tau);
+            out.waveModulus = planeLanes::largestAbsolutePrincipal<N>(tau);
         }
         else
         {
-            out.waveModulus = waveModulusLanes<N, 6>(returned) + tensorLanes::largestAbsoluteEigenvalue<N>(tau);
+            out.waveModulus = tensorLanes::largestAbsoluteEigenvalue<N>(tau);
         }
-    }
-    else
-    {
-        out.waveModulus = Lane<N>::Zero();
+        out.waveModulus += waveModulusLanes<N, 6>(returned);
     }
     out.energy = elasticEnergyLanes<N, 6>(returned);
     addExtraEnergy<N>(in.alpha(), out);

@@ -215,8 +215,8 @@ private:
     void returnInLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count,
                        bool flow, bool wantNext, LanesResult<N>& out,
                        bool wantWaveModulus = true) const;
-    // Its two forms (§P12–§P13 and §P4) from the gathered points, their trial be and F⁻¹ (the wave
-    // modulus only where asked: a gradF sample's is never read).
+    // Its two forms (§P12–§P13 and §P4) from the gathered points, their trial be and F⁻¹ (the
+    // wave modulus only where asked: a gradF sample's is never read).
     template <int N>
     void returnWithoutAxes(const GatheredLanes<D, N, State>& in, const Lane<N> (&be)[D][D],
                            const Lane<N> (&finv)[D][D], bool flow, bool wantNext,

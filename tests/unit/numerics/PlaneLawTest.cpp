@@ -1,8 +1,9 @@
 // The plane-strain logarithmic law in closed form without axes (docs/theory/plasticity.md §P13,
 // libraries/materials/plasticity/PlaneLanes.hpp, LaneFunctions.hpp):
-//   - ln y and exp y against the C library on both branches; the strain ε = ½ ln be against the C library and Eigen's eigen-solver, in the
-//     series' range and beyond it (where the C library's log and atanh take over), at a double
-//     eigenvalue (be a dilation) and at be = 1 exactly; exp(2ε) back to be;
+//   - ln y and exp y against the C library, on the series' branch and beyond it;
+//   - the strain ε = ½ ln be against Eigen's eigen-solver, in the series' range and beyond it
+//     (where the C library's log and atanh take over), at a double eigenvalue (be a dilation)
+//     and at be = 1 exactly; exp(2ε) back to be;
 //   - the largest |principal value| of a plane-strain stress;
 //   - `logarithm series` (the default) against `logarithm principalAxes` (the law of §P4) on
 //     random 2D points of j2Plasticity and druckerPrager, elastic and flowing, on the cone, the
