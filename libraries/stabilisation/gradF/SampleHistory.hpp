@@ -139,8 +139,7 @@ public:
             {
                 resizePairArray(mine.slots, mine.slots.size() + 1);
                 mine.slots.back() = static_cast<std::uint32_t>(first + j); // as NeighbourList's
-                resizePairArray(mine.states, mine.states.size() + pool_.width());
-                compact(state, &mine.states[mine.states.size() - pool_.width()]);
+                compact(state, mine.states.at(mine.states.allocate()));
             }
         }
     }
@@ -151,7 +150,14 @@ public:
         for (Pending& p : pending_)
         {
             p.slots.clear();
-            p.states.clear();
+            if (p.states.width() == pool_.width())
+            {
+                p.states.releaseAll();
+            }
+            else
+            {
+                p.states.reset(pool_.width());
+            }
         }
     }
     // The last evaluation's pending states set aside while other evaluations come (the
@@ -185,7 +191,7 @@ public:
             const Pending& p = pending_[static_cast<std::size_t>(t)];
             for (std::size_t i = 0; i < p.slots.size(); ++i)
             {
-                const double* state = &p.states[i * width];
+                const double* state = p.states.at(static_cast<StatePool::Index>(i));
                 double* record = pool_.at(slot_[p.slots[i]]);
                 for (std::size_t k = 0; k < width; ++k)
                 {
@@ -376,7 +382,8 @@ private:
     // The records laid out in the order of the slots that name them, so that an evaluation
     // (which reads them particle by particle) streams through the pool. Only where they are
     // stored changes: every state, and so every result, is the same.
-    void relocateInSlotOrder();
+    // (destination: a buffer of follow()'s, free again by then, for the records' new places.)
+    void relocateInSlotOrder(std::vector<StatePool::Index>& destination);
 
     // follow()'s new pairs that start from a state of their own, in slot order.
     void storeNewStates(const NeighbourList& list, const std::vector<int>& body,
@@ -387,17 +394,18 @@ private:
     // samples: their weights and states, by particle (before the old layout is dropped).
     void setAsideLeaving(const std::vector<int>& body, const std::vector<const Material<D>*>& materials);
 
-    // The states one thread's evaluations found to commit: slots, and compact states.
+    // The states one thread's evaluations found to commit: slots, and compact states (state i
+    // for slots[i]; in blocks, as the records: grown without a copy, and refilled every step in
+    // the memory they hold).
     struct Pending
     {
         std::vector<std::uint32_t> slots;
-        std::vector<double> states;
+        StatePool states;
     };
 
     std::string name_ = "sampleHistory";
     bool weighted_ = false;
     std::vector<double> weights_;
-    std::vector<double> remappedWeights_;
     std::vector<std::size_t> leavingOffsets_;
     std::vector<double> leavingWeights_;
     std::vector<double> leavingStates_;
@@ -413,7 +421,6 @@ private:
     std::vector<std::size_t> offsets_;
     std::vector<int> neighbours_;
     std::vector<StatePool::Index> slot_;
-    std::vector<StatePool::Index> remapped_; // follow()'s buffer
 };
 
 } // namespace sph

@@ -28,13 +28,11 @@ void SampleHistory<D>::follow(const NeighbourList& list, const std::vector<int>&
         return globalId ? (*globalId)[b] : static_cast<int>(b);
     };
     // The new slots name the records of the kept pairs (whose old slots are marked
-    // `moved`), or say where a new pair's state comes from. Into a buffer kept between
-    // moves (no allocation once grown: the reference moves every step).
-    resizePairArray(remapped_, list.pairCount());
-    if (weighted_)
-    {
-        remappedWeights_.resize(list.pairCount());
-    }
+    // `moved`), or say where a new pair's state comes from. In a buffer of this move only:
+    // held between moves it cost 4 B per pair (8 more with weights) for the whole run, where
+    // its allocation costs a move a small fraction of its time.
+    std::vector<StatePool::Index> remapped(list.pairCount());
+    std::vector<double> remappedWeights(weighted_ ? list.pairCount() : 0);
     std::vector<std::uint8_t> hasNew(n, 0);
 #pragma omp parallel if (useThreads(n))
     {
@@ -45,7 +43,7 @@ void SampleHistory<D>::follow(const NeighbourList& list, const std::vector<int>&
             const Material<D>* material = materials[static_cast<std::size_t>(body[a])];
             if (material->historyComponents() == 0)
             {
-                std::fill(&remapped_[list.begin(a)], &remapped_[list.begin(a)] + list.count(a),
+                std::fill(&remapped[list.begin(a)], &remapped[list.begin(a)] + list.count(a),
                           StatePool::none); // never read
                 continue;
             }
@@ -68,13 +66,13 @@ void SampleHistory<D>::follow(const NeighbourList& list, const std::vector<int>&
                 if (weighted_)
                 {
                     const bool firstLayout = oldEnd == offsets_[a];
-                    remappedWeights_[k] = kept          ? weights_[old]
+                    remappedWeights[k] = kept          ? weights_[old]
                                           : firstLayout ? std::numeric_limits<double>::quiet_NaN()
                                                         : 0.0;
                 }
                 if (kept)
                 {
-                    remapped_[k] = slot_[old];
+                    remapped[k] = slot_[old];
                     slot_[old] = moved;
                 }
                 // (A particle with no states yet is being laid out for the first time:
@@ -82,12 +80,12 @@ void SampleHistory<D>::follow(const NeighbourList& list, const std::vector<int>&
                 else if (!self && Fr && oldEnd > offsets_[a] &&
                          materials[static_cast<std::size_t>(body[local])] == material)
                 {
-                    remapped_[k] = fromNeighbour;
+                    remapped[k] = fromNeighbour;
                     hasNew[a] = 1;
                 }
                 else
                 {
-                    remapped_[k] = ownerInitial ? StatePool::none : fromOwner;
+                    remapped[k] = ownerInitial ? StatePool::none : fromOwner;
                     hasNew[a] = !ownerInitial || hasNew[a];
                 }
             }
@@ -96,7 +94,7 @@ void SampleHistory<D>::follow(const NeighbourList& list, const std::vector<int>&
     if (weighted_)
     {
         setAsideLeaving(body, materials);
-        weights_.swap(remappedWeights_);
+        weights_.swap(remappedWeights);
     }
     for (const StatePool::Index leaving : slot_)
     {
@@ -105,7 +103,7 @@ void SampleHistory<D>::follow(const NeighbourList& list, const std::vector<int>&
             pool_.release(leaving);
         }
     }
-    slot_.swap(remapped_);
+    slot_.swap(remapped);
     offsets_.assign(list.offsets.begin(), list.offsets.end());
     resizePairArray(neighbours_, list.indices.size());
 #pragma omp parallel for schedule(static) if (useThreads(n))
@@ -116,17 +114,15 @@ void SampleHistory<D>::follow(const NeighbourList& list, const std::vector<int>&
     storeNewStates(list, body, materials, hasNew, Fr);
     if (pool_.allocatedSinceOrdered() * relocateAfter > pool_.held())
     {
-        relocateInSlotOrder();
+        relocateInSlotOrder(remapped);
     }
     clearPending();
     current_ = true;
 }
 
 template <int D>
-void SampleHistory<D>::relocateInSlotOrder()
+void SampleHistory<D>::relocateInSlotOrder(std::vector<StatePool::Index>& destination)
 {
-    // (follow()'s buffer, free again here, holds the destinations: no allocation.)
-    std::vector<StatePool::Index>& destination = remapped_;
     resizePairArray(destination, pool_.extent());
     std::fill(destination.begin(), destination.end(), StatePool::none);
     StatePool::Index next = 0;

@@ -42,6 +42,14 @@ public:
         allocatedSinceOrdered_ = 0;
     }
     std::size_t width() const { return width_; }
+    // Every record released at once; the blocks stay for the records to come, which are handed
+    // out from index 0 again (a list refilled every step holds its memory, and never copies).
+    void releaseAll()
+    {
+        free_.clear();
+        used_ = 0;
+        allocatedSinceOrdered_ = 0;
+    }
 
     Index allocate()
     {

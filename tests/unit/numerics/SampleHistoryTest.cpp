@@ -9,7 +9,8 @@
 //   - a plastic state's compact form (Cp⁻¹'s upper triangle) unpacks bit for bit, and a state
 //     whose Cp⁻¹ is not symmetric bit for bit is refused, not rounded;
 //   - StatePool's records keep their address and contents as it grows, released ones are reused,
-//     and relocate() puts them in a given order in place (follow() does, once they scatter).
+//     releaseAll() hands them out again in the same memory, and relocate() puts them in a given
+//     order in place (follow() does, once they scatter).
 #include "materials/plasticity/PlasticHistory.hpp"
 #include "numerics/NumericsSupport.hpp"
 #include "stabilisation/gradF/SampleHistory.hpp"
@@ -418,6 +419,17 @@ TEST_CASE("StatePool: records keep address and contents as it grows, released on
     const StatePool::Index again = pool.allocate();
     CHECK((again == records[17] || again == records[4242]));
     CHECK(pool.held() == 9999);
+    // releaseAll(): every record let go, and handed out again from 0 in the same memory (the
+    // pending states' list, refilled every step, neither copies nor allocates).
+    pool.releaseAll();
+    CHECK(pool.held() == 0);
+    CHECK(pool.extent() == 0);
+    for (int i = 0; i < 10000; ++i)
+    {
+        const StatePool::Index index = pool.allocate();
+        REQUIRE(index == static_cast<StatePool::Index>(i));
+        REQUIRE(pool.at(index) == addresses[static_cast<std::size_t>(i)]);
+    }
     pool.reset(3);
     CHECK(pool.held() == 0);
     CHECK(pool.allocate() == 0);
