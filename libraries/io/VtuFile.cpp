@@ -190,8 +190,7 @@ vtkSmartPointer<vtkUnstructuredGrid> makeGrid(const VtuData& piece, const VtuDat
 
     for (const auto& [name, array] : piece.pointData)
     {
-        const std::size_t size = array.single ? array.singles.size() : array.values.size();
-        if (size != n * static_cast<std::size_t>(array.components))
+        if (array.size() != n * static_cast<std::size_t>(array.components))
         {
             throw std::logic_error("point array '" + name + "' has the wrong size");
         }
@@ -212,7 +211,7 @@ vtkSmartPointer<vtkUnstructuredGrid> makeGrid(const VtuData& piece, const VtuDat
     for (const auto& [name, array] : header.fieldData)
     {
         grid->GetFieldData()->AddArray(
-            makeArray(name, array, array.values.size() / static_cast<std::size_t>(array.components)));
+            makeArray(name, array, array.size() / static_cast<std::size_t>(array.components)));
     }
     for (const auto& [name, strings] : header.stringFields)
     {

@@ -18,15 +18,28 @@ namespace sph
 {
 
 // Values that are not held in memory but copied out, item by item, when the writer reaches them:
-// item i holds offsets[i + 1] - offsets[i] values (offsets[0] = 0), which get(i, out) copies to
-// out. A ragged particle field's entries (an item per particle, gradF's samples the largest data
-// of a plastic run) are written so, and cost the output no copy of them.
+// get(i, out) copies item i's values to out. Either every item holds `width` values (`items` of
+// them: a particle field, an item per particle), or, with width 0, item i holds offsets[i + 1] -
+// offsets[i] values (offsets[0] = 0: a ragged particle field, gradF's samples the largest data
+// of a plastic run). Written so, a field costs the output no copy of it.
 struct VtuStreamedValues
 {
+    std::size_t width = 0;
+    std::size_t items = 0;
     std::vector<std::size_t> offsets;
     std::function<void(std::size_t item, double* out)> get;
 
-    std::size_t size() const { return offsets.empty() ? 0 : offsets.back(); }
+    bool fixedWidth() const { return width > 0; }
+    std::size_t itemCount() const
+    {
+        return fixedWidth() ? items : offsets.empty() ? 0 : offsets.size() - 1;
+    }
+    std::size_t size() const { return first(itemCount()); }
+    // The index of item i's first value (first(itemCount()) = size()).
+    std::size_t first(std::size_t item) const
+    {
+        return fixedWidth() ? item * width : offsets.empty() ? 0 : offsets[item];
+    }
 };
 
 struct VtuArray
@@ -39,9 +52,15 @@ struct VtuArray
     std::vector<float> singles; // the values of a `single` array
     bool readFromSingles = false; // (read back) the file stores it as Float32
     bool single = false;          // written as Float32, from `singles`
-    // (field data only) written from these instead of `values`, which stays empty; they read
-    // their source when the file is written, so it must not change before.
+    // Written from these instead of `values`, which stays empty (not with `integer` or
+    // `single`); they read their source when the file is written, so it must not change before.
     std::shared_ptr<const VtuStreamedValues> streamed = nullptr;
+
+    // The number of values it holds, wherever they are.
+    std::size_t size() const
+    {
+        return streamed ? streamed->size() : single ? singles.size() : values.size();
+    }
 };
 
 // The values of `array` in memory (a streamed array's copied into `values`; others unchanged).

@@ -29,7 +29,7 @@ std::atomic<std::uint64_t> lastSerial{0};
 void VtuStreamedArray::setSource(std::shared_ptr<const VtuStreamedValues> source, int components)
 {
     if (!source || components < 1 || source->size() % static_cast<std::size_t>(components) != 0 ||
-        source->offsets.empty() || source->offsets.front() != 0)
+        (!source->fixedWidth() && (source->offsets.empty() || source->offsets.front() != 0)))
     {
         throw std::logic_error("VtuStreamedArray: a source that is not whole tuples");
     }
@@ -42,23 +42,27 @@ void VtuStreamedArray::setSource(std::shared_ptr<const VtuStreamedValues> source
 double VtuStreamedArray::GetValue(vtkIdType valueIdx) const
 {
     const auto value = static_cast<std::size_t>(valueIdx);
-    const std::vector<std::size_t>& offsets = source_->offsets;
-    if (value >= source_->size())
+    const VtuStreamedValues& source = *source_;
+    if (value >= source.size())
     {
         throw std::out_of_range("VtuStreamedArray: value " + std::to_string(value) + " of " +
-                                std::to_string(source_->size()));
+                                std::to_string(source.size()));
     }
-    if (cache.serial != serial_ || value < offsets[cache.item] || value >= offsets[cache.item + 1])
+    if (cache.serial != serial_ || value < source.first(cache.item) ||
+        value >= source.first(cache.item + 1))
     {
         // The item that holds it: the last whose first value is not beyond it (items without
         // values share their offset with the next, which upper_bound skips).
-        cache.item = static_cast<std::size_t>(
-                         std::upper_bound(offsets.begin(), offsets.end(), value) - offsets.begin()) - 1;
-        cache.values.resize(offsets[cache.item + 1] - offsets[cache.item]);
-        source_->get(cache.item, cache.values.data());
+        const std::vector<std::size_t>& offsets = source.offsets;
+        cache.item = source.fixedWidth()
+                         ? value / source.width
+                         : static_cast<std::size_t>(std::upper_bound(offsets.begin(), offsets.end(), value) -
+                                                    offsets.begin()) - 1;
+        cache.values.resize(source.first(cache.item + 1) - source.first(cache.item));
+        source.get(cache.item, cache.values.data());
         cache.serial = serial_;
     }
-    return cache.values[value - offsets[cache.item]];
+    return cache.values[value - source.first(cache.item)];
 }
 
 void VtuStreamedArray::GetTypedTuple(vtkIdType tupleIdx, double* tuple) const
@@ -82,9 +86,9 @@ void materialise(VtuArray& array)
     }
     const VtuStreamedValues& source = *array.streamed;
     array.values.resize(source.size());
-    for (std::size_t item = 0; item + 1 < source.offsets.size(); ++item)
+    for (std::size_t item = 0; item < source.itemCount(); ++item)
     {
-        source.get(item, array.values.data() + source.offsets[item]);
+        source.get(item, array.values.data() + source.first(item));
     }
     array.streamed.reset();
 }

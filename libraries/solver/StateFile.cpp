@@ -32,7 +32,10 @@ int displayIndex(FieldKind kind, int c)
     return c;
 }
 
-// The written points [begin, end) of `field`: point k is particle k, or (*selection)[k].
+// The written points [begin, end) of `field`: point k is particle k, or (*selection)[k]. A stored
+// field of doubles is streamed (the file reads it from the particles as it is written: no copy
+// of it); a derived one (which may compute, e.g. a return map) and integer or single-precision
+// arrays are copied.
 template <int D>
 VtuArray arrayOf(const typename ParticleFields<D>::Field& field, const std::vector<std::size_t>* selection,
                  std::size_t begin, std::size_t end)
@@ -46,25 +49,38 @@ VtuArray arrayOf(const typename ParticleFields<D>::Field& field, const std::vect
     {
         padding[0] = padding[4] = padding[8] = 1.0;
     }
+    // Point k's values as written (a display tensor 3×3, a display vector 3, padded).
+    const auto copyOut = [array = field.array.get(), selection, native, display, kind = spec.kind(),
+                          padding](std::size_t k, double* out) {
+        std::copy(padding.begin(), padding.end(), out);
+        std::array<double, 27> value{};
+        array->get(selection ? (*selection)[k] : k, value.data());
+        for (int c = 0; c < native; ++c)
+        {
+            out[display ? displayIndex<D>(kind, c) : c] = value[static_cast<std::size_t>(c)];
+        }
+    };
     VtuArray array;
     array.components = shown;
     array.integer = spec.kind() == FieldKind::integer;
     array.single = spec.isSinglePrecision();
-    array.values.resize((end - begin) * static_cast<std::size_t>(shown));
-    std::array<double, 27> value{};
-    for (std::size_t k = begin; k < end; ++k)
-    {
-        double* out = &array.values[(k - begin) * static_cast<std::size_t>(shown)];
-        std::copy(padding.begin(), padding.end(), out);
-        field.array->get(selection ? (*selection)[k] : k, value.data());
-        for (int c = 0; c < native; ++c)
-        {
-            out[display ? displayIndex<D>(spec.kind(), c) : c] = value[static_cast<std::size_t>(c)];
-        }
-    }
     if (display && spec.kind() == FieldKind::tensor)
     {
         array.componentNames = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};
+    }
+    if (field.array->stored() && !array.integer && !array.single)
+    {
+        auto source = std::make_shared<VtuStreamedValues>();
+        source->width = static_cast<std::size_t>(shown);
+        source->items = end - begin;
+        source->get = [copyOut, begin](std::size_t item, double* out) { copyOut(begin + item, out); };
+        array.streamed = std::move(source);
+        return array;
+    }
+    array.values.resize((end - begin) * static_cast<std::size_t>(shown));
+    for (std::size_t k = begin; k < end; ++k)
+    {
+        copyOut(k, &array.values[(k - begin) * static_cast<std::size_t>(shown)]);
     }
     if (array.single)
     {
@@ -253,9 +269,13 @@ void writeState(const ParticleFields<D>& fields, const RunScalars& scalars, doub
 {
     writeStateHeader<D>(fields, scalars, time, data);
     writeStatePoints<D>(fields, nullptr, 0, fields.size(), data);
-    for (auto& [name, array] : data.fieldData)
+    // The data outlives this call: no reference to the fields.
+    for (auto* arrays : {&data.fieldData, &data.pointData})
     {
-        materialise(array); // the data outlives this call: no reference to the fields
+        for (auto& [name, array] : *arrays)
+        {
+            materialise(array);
+        }
     }
 }
 

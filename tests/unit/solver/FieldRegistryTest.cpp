@@ -225,7 +225,14 @@ void roundTrip(const std::filesystem::path& file)
     const std::vector<std::size_t> selection{4, 1};
     VtuData selected;
     writeStatePoints<D>(out, &selection, 0, 2, selected);
-    CHECK(selected.pointData.at("restart:volume").values == std::vector<double>{written.s[4], written.s[1]});
+    // A stored field of doubles is not copied into the piece: the writer streams it from the
+    // fields (what materialise() gives is what the file gets).
+    VtuArray volume = selected.pointData.at("restart:volume");
+    CHECK(volume.values.empty());
+    REQUIRE(volume.streamed);
+    CHECK(volume.size() == 2u);
+    materialise(volume);
+    CHECK(volume.values == std::vector<double>{written.s[4], written.s[1]});
 
     // A file without one of the restart arrays, or with another shape, is an input error
     // naming the file and the array.
