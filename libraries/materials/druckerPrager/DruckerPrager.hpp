@@ -204,28 +204,24 @@ void DruckerPrager<D>::returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha,
         shearScale[i] = std::max(1.0 - mu * deltaGamma[i] / rootJ2Trial, 0.0);
     }
     // τ:Δεp = s:Δe + p Δεv (P9.4), and α += √(2/3)|dev Δεp| (a tensor's off-diagonal
-    // components twice).
+    // components twice). (The diagonal and the off-diagonal components in loops of their own:
+    // with the choice inside the loop over the lanes GCC left it scalar, a third of the
+    // rings' step in TL gradF.)
     Lane<N> work = Lane<N>::Zero();
     Lane<N> plasticNorm = Lane<N>::Zero();
+    const Lane<N> evThird = evReturned / 3.0; // (as an array: one vector division)
     for (int k = 0; k < C; ++k)
     {
+        const double twice = onDiagonal(k) ? 1.0 : 2.0; // 1.0 × x is x, to the bit
+        const Lane<N> devReturned = shearScale * trial.dev[k];
+        const Lane<N> plastic = trial.dev[k] - devReturned;
+        work += twice * (devReturned * plastic);
+        plasticNorm += twice * (plastic * plastic);
         for (int i = 0; i < N; ++i)
         {
-            const double dev = trial.dev[k][i];
-            const double devReturned = shearScale[i] * dev;
-            const bool flows = phiTrial[i] > 0.0;
-            if (onDiagonal(k))
-            {
-                eps.eps[k][i] = flows ? devReturned + evReturned[i] / 3.0 : eps.eps[k][i];
-                work[i] += devReturned * (dev - devReturned);
-                plasticNorm[i] += (dev - devReturned) * (dev - devReturned);
-            }
-            else
-            {
-                eps.eps[k][i] = flows ? devReturned : eps.eps[k][i];
-                work[i] += 2.0 * (devReturned * (dev - devReturned));
-                plasticNorm[i] += 2.0 * ((dev - devReturned) * (dev - devReturned));
-            }
+            const double returned =
+                onDiagonal(k) ? devReturned[i] + evThird[i] : devReturned[i];
+            eps.eps[k][i] = phiTrial[i] > 0.0 ? returned : eps.eps[k][i];
         }
     }
     // (P9.7): where ψ ≠ φ the step's τ:Δεp is the right end of ∫ τ:dεp, which on the cone
@@ -233,20 +229,28 @@ void DruckerPrager<D>::returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha,
     // flowing commit's pressure p_c closes it to second order. At the start of a flow (no p_c)
     // the right end is kept.
     const bool nonAssociative = etaBar_ != eta_;
+    // (Into locals, copied out at the end: `flow` may hold `alpha` or `flowPressure` for all
+    // the compiler knows, and writing it in the loop kept the loop scalar.)
+    Lane<N> nextDeltaGamma, nextAlphas, dissipation, pressure;
     for (int i = 0; i < N; ++i)
     {
         const double p = std::min(K * evReturned[i], tensileStrength_);
         const double rightEnd = 2.0 * mu * work[i] + p * (trial.volumetric[i] - evReturned[i]);
-        const bool trapezoid = nonAssociative && flowPressure[i] != noFlowPressure;
+        // (`&`, not `&&`: no branch in the loop, which then vectorises.)
+        const bool trapezoid = nonAssociative & (flowPressure[i] != noFlowPressure);
         const double correction =
             trapezoid ? 0.5 * (etaBar_ - eta_) * deltaGamma[i] * (flowPressure[i] - p) : 0.0;
         const double nextAlpha = alpha[i] + std::sqrt(2.0 / 3.0) * std::sqrt(plasticNorm[i]);
         const bool flows = phiTrial[i] > 0.0;
-        flow.deltaGamma[i] = flows ? deltaGamma[i] : 0.0;
-        flow.alpha[i] = flows ? nextAlpha : alpha[i];
-        flow.dissipation[i] = flows ? rightEnd + correction : 0.0;
-        flow.pressure[i] = flows && nonAssociative ? p : noFlowPressure;
+        nextDeltaGamma[i] = flows ? deltaGamma[i] : 0.0;
+        nextAlphas[i] = flows ? nextAlpha : alpha[i];
+        dissipation[i] = flows ? rightEnd + correction : 0.0;
+        pressure[i] = flows & nonAssociative ? p : noFlowPressure;
     }
+    flow.deltaGamma = nextDeltaGamma;
+    flow.alpha = nextAlphas;
+    flow.dissipation = dissipation;
+    flow.pressure = pressure;
 }
 
 } // namespace sph
