@@ -19,10 +19,9 @@
 // path runs the same instructions on a point's lane, and which form a point takes depends on its
 // own be only, so a point gives the same digits on every path (test: numericsTests "[lanes]").
 
+#include "materials/plasticity/AxesFreeLaw.hpp"
 #include "materials/plasticity/GatheredLanes.hpp"
 #include "materials/plasticity/JacobiLanes.hpp"
-#include "materials/plasticity/PlaneLanes.hpp"
-#include "materials/plasticity/TensorLanes.hpp"
 
 namespace sph
 {
@@ -62,7 +61,7 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
 
 // §P12 (3D) and §P13 (2D): ε = ½ ln be without axes, the return on the tensor's volumetric part
 // and deviator, τ = 2μ dev ε + p 1, exp(2ε) back. inRange[i] = 1 where lane i's result is valid
-// (in 2D every lane).
+// (in 2D every lane). What differs between 2D and 3D is AxesFreeLaw<D>'s.
 template <int D, class Model>
 template <int N>
 void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, State>& in,
@@ -71,23 +70,9 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
                                                       bool wantNext, bool wantWaveModulus,
                                                       LanesResult<N>& out, Lane<N>& inRange) const
 {
+    using Law = AxesFreeLaw<D>;
     StrainLanes<N, 6> strain;
-    if constexpr (D == 2)
-    {
-        planeLanes::logarithmicStrain<N>(be, in.trialZZ(), strain); // §P13: every point
-        inRange = Lane<N>::Ones();
-    }
-    else
-    {
-        SymmetricLanes<N> b;
-        b[0] = be[0][0];
-        b[1] = be[1][1];
-        b[2] = be[2][2];
-        b[3] = 0.5 * (be[0][1] + be[1][0]);
-        b[4] = 0.5 * (be[0][2] + be[2][0]);
-        b[5] = 0.5 * (be[1][2] + be[2][1]);
-        tensorLanes::logarithmicStrain<N>(b, strain, inRange);
-    }
+    Law::template strain<N>(in, be, strain, inRange);
 
     returnOrTrial<N, 6>(strain, in.alpha(), in.flowPressure(), flow, out.flow);
 
@@ -101,15 +86,7 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
     out.waveModulus = Lane<N>::Zero();
     if (wantWaveModulus)
     {
-        // M + max |τᵢ| (P2.5): in 2D in closed form, in 3D by the deviator's cubic.
-        if constexpr (D == 2)
-        {
-            out.waveModulus = planeLanes::largestAbsolutePrincipal<N>(tau);
-        }
-        else
-        {
-            out.waveModulus = tensorLanes::largestAbsoluteEigenvalue<N>(tau);
-        }
+        out.waveModulus = Law::template largestAbsolute<N>(tau);
         out.waveModulus += waveModulusLanes<N, 6>(returned);
     }
     out.energy = elasticEnergyLanes<N, 6>(returned);
@@ -123,39 +100,7 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
     {
         return; // nothing flows: every state stays (each lane's result is its own either way)
     }
-    if constexpr (D == 2)
-    {
-        for (int i = 0; i < N; ++i)
-        {
-            if (out.flow.deltaGamma[i] > 0.0)
-            {
-                double B[2][2], beZZ;
-                planeLanes::exponentialOfTwice<N>(returned, i, B, beZZ);
-                lanes::writeFlowingState<D, N, State>(finv, B, beZZ, out.flow, i, out.next);
-            }
-        }
-    }
-    else
-    {
-        SymmetricLanes<N> returnedBe;
-        tensorLanes::exponentialOfTwice<N>(returned, returnedBe);
-        for (int i = 0; i < N; ++i)
-        {
-            if (!(out.flow.deltaGamma[i] > 0.0))
-            {
-                continue;
-            }
-            double B[D][D];
-            for (int k = 0; k < D; ++k)
-            {
-                for (int l = 0; l < D; ++l)
-                {
-                    B[k][l] = returnedBe[at[k][l]][i];
-                }
-            }
-            lanes::writeFlowingState<D, N, State>(finv, B, returnedBe[2][i], out.flow, i, out.next);
-        }
-    }
+    Law::template writeFlowingStates<N, State>(returned, finv, out);
 }
 
 // §P4 in principal axes: the principal form of be, the return on the principal strains, τ
