@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <utility>
@@ -41,6 +42,9 @@ namespace sph
 // into next + i * stride and its dissipation per unit initial volume into dissipation[i].
 // A third mode: trial states only (no plastic flow) from the committed history of one particle
 // for all F[i] (the linearised evaluation of the gradient-of-F scheme, §P7).
+// With next, `changed` (when not null) says per state: changed[i] = 0 where the commit would
+// keep state i bit for bit (a point that does not flow), and next + i * stride is then not
+// written; 1 where it may differ (next written).
 struct HistoryOf
 {
     std::size_t first = 0;
@@ -49,6 +53,7 @@ struct HistoryOf
     double* dissipation = nullptr;
     std::size_t stride = 0;
     bool trialAround = false;
+    std::uint8_t* changed = nullptr;
 
     static HistoryOf particles(std::size_t first) { return {first}; }
     static HistoryOf trialOf(std::size_t particle)
@@ -58,9 +63,9 @@ struct HistoryOf
         return h;
     }
     static HistoryOf samples(const double* states, std::size_t stride, double* next = nullptr,
-                             double* dissipation = nullptr)
+                             double* dissipation = nullptr, std::uint8_t* changed = nullptr)
     {
-        return {0, states, next, dissipation, stride};
+        return {0, states, next, dissipation, stride, false, changed};
     }
     bool perSample() const { return states != nullptr; }
     std::size_t particle(std::size_t i) const { return trialAround ? first : first + i; }

@@ -6,6 +6,9 @@
 
 #include "materials/plasticity/ReturnMapLanes.hpp"
 
+#include <bit>
+#include <cstdint>
+
 namespace sph
 {
 
@@ -26,6 +29,10 @@ void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double*
                 {
                     chunk.next += i * history.stride;
                     chunk.dissipation += i;
+                    if (history.changed)
+                    {
+                        chunk.changed += i;
+                    }
                 }
                 evaluateSamplesInLanes(F + i, P + i, psi ? psi + i : nullptr, count, chunk);
                 i += count;
@@ -67,6 +74,10 @@ void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double*
             {
                 std::copy(committed, committed + State::packedSize, next);
                 next[State::flowPressureAt] = noFlowPressure;
+            }
+            if (history.changed)
+            {
+                history.changed[i] = 1; // (written either way: the 1D bar's rare path)
             }
             history.dissipation[i] = r.flow.dissipation;
         }
@@ -123,7 +134,22 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
             }
             if (wantNext)
             {
-                out.packNext(lane, history.next + i * history.stride);
+                // A lane that does not flow keeps the committed state but for the flow pressure
+                // the return gave it (keepCommitted): the committed state, bit for bit, where
+                // that is the committed pressure. Only the others are written and compared.
+                const double* committed = history.states + i * history.stride;
+                const bool changed =
+                    out.flow.deltaGamma[i] > 0.0 ||
+                    std::bit_cast<std::uint64_t>(out.flow.pressure[i]) !=
+                        std::bit_cast<std::uint64_t>(committed[State::flowPressureAt]);
+                if (history.changed)
+                {
+                    history.changed[i] = changed ? 1 : 0;
+                }
+                if (changed || !history.changed)
+                {
+                    out.packNext(lane, history.next + i * history.stride);
+                }
                 history.dissipation[i] = out.flow.dissipation[i];
             }
         }

@@ -139,6 +139,7 @@ public:
         std::vector<double> omega;       // energy weights chosen at a move (§G9)
         std::vector<double> states;      // the samples' committed states, unpacked (§P7)
         std::vector<double> nextStates;  // and the states a commit would make of them
+        std::vector<std::uint8_t> changed; // (HistoryOf::changed) which of them were written
         std::vector<double> alpha;       // sampleVolume particle: (J_a / det F_b(a))^(1/D)
         void resize(std::size_t n)
         {

@@ -20,7 +20,7 @@ void GradF<D>::evaluateSamples(std::size_t a, const Material<D>& material, const
         if (pending && material.hasHistory())
         {
             samples_.keepPending(list.begin(a), count, scratch.states.data(),
-                                 scratch.nextStates.data());
+                                 scratch.nextStates.data(), scratch.changed.data());
         }
         return;
     }
@@ -71,8 +71,9 @@ HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
         return HistoryOf::samples(scratch.states.data(), stride);
     }
     scratch.nextStates.resize(scratch.states.size());
+    scratch.changed.resize(list.count(a));
     return HistoryOf::samples(scratch.states.data(), stride, scratch.nextStates.data(),
-                              scratch.dissipation.data());
+                              scratch.dissipation.data(), scratch.changed.data());
 }
 
 // The particles' own states (each = its sample a–a: F_a(a) = F_a) for display and as the

@@ -43,6 +43,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -122,9 +123,10 @@ public:
     }
     // What an evaluation found a commit would make of those states (`next`, laid out as
     // read() gives them in `committed`): the states that differ are kept for the commit. The
-    // last evaluation's are the ones committed; clearPending() before it starts.
+    // last evaluation's are the ones committed; clearPending() before it starts. changed (if
+    // not null): HistoryOf's, 0 where next is the committed state and was not written.
     void keepPending(std::size_t first, std::size_t count, const double* committed,
-                     const double* next)
+                     const double* next, const std::uint8_t* changed = nullptr)
     {
         const auto thread = static_cast<std::size_t>(omp_get_thread_num());
         if (thread >= pending_.size())
@@ -134,6 +136,10 @@ public:
         Pending& mine = pending_[thread];
         for (std::size_t j = 0; j < count; ++j)
         {
+            if (changed && !changed[j])
+            {
+                continue;
+            }
             const double* state = next + j * stride_;
             if (!sameBits(state, committed + j * stride_))
             {

@@ -7,6 +7,8 @@
 //   - eight at a time = one at a time, bit for bit (wave speeds and committed states with and
 //     without the memo of the force evaluation), and a body's samples = its particles, bit
 //     for bit;
+//   - a sample marked unchanged (HistoryOf::changed) would commit its committed state, bit for
+//     bit, and the others' next states are those of an evaluation that writes them all;
 //   - elastic samples are `hencky`'s to round-off (an independent path: Eigen's eigen-solver
 //     where the lanes use Jacobi rotations in 3D), also at a double eigenvalue (uniaxial).
 // On every branch of the returns: elastic points, flowing ones, the cone and the apex of
@@ -117,6 +119,62 @@ Mat<2> scaled(double s) { return s * Mat<2>::Identity(); }
 
 const Mat<3> identity3 = Mat<3>::Identity();
 
+// HistoryOf::changed (what gradF's samples hand the material so that a commit compares only the
+// states that may change): the points as stress samples with and without it. Where a point is
+// marked unchanged, the state its commit would make is its committed one bit for bit, and its
+// `next` is left as it was; elsewhere `next`, and everything else, is the same either way. Every
+// third point's committed state carries a flow pressure (a druckerPrager point that flowed
+// before), which a point that does not flow now drops: marked changed. Returns the number of
+// points marked unchanged.
+template <int D>
+std::size_t checkTheChangedStates(const std::string& materialText, const Mat<D>& centre,
+                                  double amplitude, std::size_t count, unsigned seed)
+{
+    constexpr std::size_t stride = PlasticState<D>::packedSize;
+    RandomPoints<D> points(centre, amplitude, count, seed, false);
+    for (std::size_t i = 0; i < count; i += 3)
+    {
+        points.states[i * stride + PlasticState<D>::flowPressureAt] = -1234.5;
+    }
+    Body<D> body(materialText, points);
+    std::vector<Mat<D>> P(count), PMarked(count);
+    std::vector<double> psi(count), psiMarked(count);
+    std::vector<double> next(count * stride), dissipation(count), dissipationMarked(count);
+    const double untouched = -7.25;
+    std::vector<double> nextMarked(count * stride, untouched);
+    std::vector<std::uint8_t> changed(count, 2);
+    body.material->evaluate(points.F.data(), P.data(), psi.data(), count,
+                            HistoryOf::samples(points.states.data(), stride, next.data(),
+                                               dissipation.data()));
+    body.material->evaluate(points.F.data(), PMarked.data(), psiMarked.data(), count,
+                            HistoryOf::samples(points.states.data(), stride, nextMarked.data(),
+                                               dissipationMarked.data(), changed.data()));
+    std::size_t unchanged = 0;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        INFO("point " << i << " of " << count);
+        REQUIRE((changed[i] == 0 || changed[i] == 1));
+        CHECK(sameBits(P[i], PMarked[i]));
+        CHECK(sameBits(psi[i], psiMarked[i]));
+        CHECK(sameBits(dissipation[i], dissipationMarked[i]));
+        for (std::size_t c = 0; c < stride; ++c)
+        {
+            const double written = next[i * stride + c];
+            if (changed[i] == 0)
+            {
+                CHECK(sameBits(written, points.states[i * stride + c]));
+                CHECK(nextMarked[i * stride + c] == untouched);
+            }
+            else
+            {
+                CHECK(sameBits(written, nextMarked[i * stride + c]));
+            }
+        }
+        unchanged += changed[i] == 0 ? 1 : 0;
+    }
+    return unchanged;
+}
+
 } // namespace
 
 TEST_CASE("returns in lanes: druckerPrager, eight points at a time as one at a time, bit for bit",
@@ -140,6 +198,14 @@ TEST_CASE("returns in lanes: druckerPrager, eight points at a time as one at a t
     CHECK(cone > 3);
     CHECK(cone < 18);
     CHECK(compareThePaths<3>(dp, 1.02 * identity3, 0.003, 11, 10) > 8);
+    // Only the samples that flow, or drop a flow pressure, are compared at the commit.
+    // (Both kinds among the points: a third carry a flow pressure, some flow.)
+    const std::size_t kept2 = checkTheChangedStates<2>(dp, identity, 0.01, 29, 1);
+    CHECK(kept2 > 0);
+    CHECK(kept2 < 20);
+    const std::size_t kept3 = checkTheChangedStates<3>(dp, identity3, 0.0015, 21, 9);
+    CHECK(kept3 > 0);
+    CHECK(kept3 < 14);
 }
 
 TEST_CASE("returns in lanes: j2Plasticity, eight points at a time as one at a time, bit for bit",
@@ -161,6 +227,9 @@ TEST_CASE("returns in lanes: j2Plasticity, eight points at a time as one at a ti
     CHECK(copperFlowing < 26);
     // Uniaxial stretches from the virgin state: two equal principal stretches.
     CHECK(compareThePaths<3>(copper, identity3, 0.01, 16, 8, true) > 8);
+    // Only the samples that flow, or drop a flow pressure, are compared at the commit.
+    CHECK(checkTheChangedStates<2>(hardening, identity, 0.0008, 27, 5) > 3);
+    CHECK(checkTheChangedStates<3>(copper, identity3, 0.003, 29, 7) > 3);
 }
 
 TEST_CASE("returns in lanes: elastic points are hencky's (2D, and 3D with Jacobi rotations)",
