@@ -98,6 +98,10 @@ public:
         // The particles' F of the last force evaluation, from which a material with history
         // computes the state it displays (null in tests).
         const std::vector<Mat<D>>* F = nullptr;
+        // Whether the scheme evaluates the material at the particles' own F and history
+        // (Stabilisation::evaluatesParticles): if not, a plastic material keeps no memo of
+        // the particles' returns (ReturnMemo, which only those evaluations fill).
+        bool particleEvaluations = true;
     };
 
     virtual ~Material() = default;

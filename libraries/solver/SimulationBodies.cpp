@@ -184,7 +184,7 @@ void Simulation<D>::setupBodies(const Dictionary& bodies)
         const Dictionary& dict = entry->dict();
         const Params p = bodySchema().validate(dict, "a body", D, TypeEntry::isKey);
         materialModels_.push_back(selectModel<Material<D>>(
-            p.dict("material"), {&fields_, particles_.bodies[b], &particles_.F}, D));
+            p.dict("material"), {&fields_, particles_.bodies[b], &particles_.F, scheme_->evaluatesParticles()}, D));
         materials_.push_back(materialModels_.back().get());
         checkWaveSpeed(p.dict("material"), b);
         historyMaterials_ = historyMaterials_ || materials_.back()->hasHistory();

@@ -256,6 +256,11 @@ public:
     virtual bool setAsideEvaluation() { return false; }
     virtual void restoreEvaluation() {}
 
+    // Whether the scheme evaluates the materials at the particles' own F and committed history
+    // (HistoryOf::particles): a plastic material then remembers each particle's return for the
+    // time step and the commit (ReturnMemo). gradF evaluates its stress samples instead.
+    virtual bool evaluatesParticles() const { return true; }
+
     // Materials with history (docs/theory/plasticity.md §P7). A scheme that keeps history of
     // its own declares it here as particle fields (called once, when some material has
     // history), so that it is restart data and moves with its particles between ranks...

@@ -271,6 +271,10 @@ private:
     }
 
     PlasticHistory<D> history_;
+    // Where the memo's fields go when the scheme never evaluates particles (gradF): an empty
+    // registry of its own, so that it holds nothing and finds nothing (34 numbers per particle
+    // less in 3D).
+    ParticleFields<D> unusedMemoFields_;
     mutable ReturnMemo<D> memo_;
 };
 
@@ -294,7 +298,8 @@ ReturnMapPlasticity<D, Model>::ReturnMapPlasticity(const Params& params,
                                                    const typename Material<D>::Args& args)
     : Material<D>(params), elastic_(IsotropicElasticity::read<D>(params)), law_(elastic_),
       form_(params.word("logarithm") == "principalAxes" ? LawForm::principalAxes : LawForm::series),
-      history_(args), memo_(history_.registry())
+      history_(args),
+      memo_(args.particleEvaluations ? history_.registry() : unusedMemoFields_)
 {
     if (args.F && args.fields)
     {

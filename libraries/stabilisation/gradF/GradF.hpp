@@ -104,6 +104,9 @@ public:
         dissipationAside_.swap(sampleDissipation_);
     }
     bool movesParticleHistory() const override { return elasticState_; }
+    // A material with history is evaluated at the stress samples (its own history each, or the
+    // particle's trial with `plasticSamples linearised`), never through a particle's memo.
+    bool evaluatesParticles() const override { return false; }
     bool movesDissipate() const override { return openedFromParticle_; }
     double moveDissipation(const std::vector<std::uint8_t>* owned) const override;
     std::string nextToTry(bool updated, bool plastic) const override

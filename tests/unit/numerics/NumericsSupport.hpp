@@ -383,10 +383,12 @@ struct MaterialPoint
     ParticleFields<D> fields;
     std::unique_ptr<Material<D>> material;
 
-    explicit MaterialPoint(const std::string& text)
+    // particleEvaluations: Material::Args' (false: as gradF builds it, no memo of returns).
+    explicit MaterialPoint(const std::string& text, bool particleEvaluations = true)
     {
         fields.setSize(1);
-        material = test::build<Material<D>>(text, {&fields, BodyRange{"point", 0, 1}, nullptr}, D);
+        material = test::build<Material<D>>(
+            text, {&fields, BodyRange{"point", 0, 1}, nullptr, particleEvaluations}, D);
     }
     Mat<D> stress(const Mat<D>& F) const
     {

@@ -487,19 +487,27 @@ void memoChangesNothing()
 {
     MaterialPoint<D> memo(j2Text());
     MaterialPoint<D> fresh(j2Text());
+    // Built for a scheme that never evaluates particles (gradF): no memo fields, the same results.
+    MaterialPoint<D> noMemo(j2Text(), false);
+    CHECK(memo.fields.find("returnMemoF") != nullptr);
+    CHECK(noMemo.fields.find("returnMemoF") == nullptr);
     for (int step = 1; step <= 12; ++step)
     {
         Mat<D> F = stretchX<D>(std::exp(0.002 * step), std::exp(-0.0007 * step));
         F(0, 1) = 0.001 * step; // not coaxial with the committed Cp⁻¹
-        memo.stress(F);
+        const Mat<D> P = memo.stress(F);
+        CHECK(noMemo.stress(F) == P); // (fresh is never evaluated: nothing in its memo)
         const double cMemo = memo.material->maxWaveSpeed(&F, 1, 0);
         const double cFresh = fresh.material->maxWaveSpeed(&F, 1, 0);
         CHECK(cMemo == cFresh);
+        CHECK(noMemo.material->maxWaveSpeed(&F, 1, 0) == cFresh);
         const double dMemo = memo.commit(F);
         const double dFresh = fresh.commit(F);
         CHECK(dMemo == dFresh);
+        CHECK(noMemo.commit(F) == dFresh);
         CHECK(memo.alpha() == fresh.alpha());
         CHECK(memo.inversePlastic() == fresh.inversePlastic());
+        CHECK(noMemo.inversePlastic() == fresh.inversePlastic());
     }
     CHECK(memo.alpha() > 0.0); // the path yields
 
