@@ -35,6 +35,7 @@
 #include "particles/NeighbourList.hpp"
 #include "particles/Parallel.hpp"
 #include "particles/ParticleFields.hpp"
+#include "stabilisation/gradF/PendingStates.hpp"
 #include "stabilisation/gradF/StatePool.hpp"
 
 #include <omp.h>
@@ -128,12 +129,7 @@ public:
     void keepPending(std::size_t first, std::size_t count, const double* committed,
                      const double* next, const std::uint8_t* changed = nullptr)
     {
-        const auto thread = static_cast<std::size_t>(omp_get_thread_num());
-        if (thread >= pending_.size())
-        {
-            throw std::logic_error("SampleHistory: keepPending() before clearPending()");
-        }
-        Pending& mine = pending_[thread];
+        PendingStates::List& mine = pending_.mine();
         for (std::size_t j = 0; j < count; ++j)
         {
             if (changed && !changed[j])
@@ -150,36 +146,17 @@ public:
         }
     }
     // A force evaluation starts: what the last one kept is no longer the state to commit.
-    void clearPending()
-    {
-        pending_.resize(static_cast<std::size_t>(std::max(1, omp_get_max_threads())));
-        for (Pending& p : pending_)
-        {
-            p.slots.clear();
-            if (p.states.width() == pool_.width())
-            {
-                p.states.releaseAll();
-            }
-            else
-            {
-                p.states.reset(pool_.width());
-            }
-        }
-    }
+    void clearPending() { pending_.clear(pool_.width()); }
     // The last evaluation's pending states set aside while other evaluations come (the
     // operator probe's), and put back for the commit.
-    void setAsidePending() { pending_.swap(aside_); }
-    void restorePending()
-    {
-        pending_.swap(aside_);
-        aside_.clear(); // the probe's states: no memory held until the next probe
-    }
+    void setAsidePending() { pending_.setAside(); }
+    void restorePending() { pending_.restore(); }
     // The states of the last evaluation become the committed ones, in place: first a record
     // for each sample that had none (the pool grows, one thread), then the copies, each
     // evaluating thread's list by a thread (the lists name distinct slots).
     void commit()
     {
-        for (Pending& p : pending_)
+        for (const PendingStates::List& p : pending_.lists())
         {
             for (const std::uint32_t slot : p.slots)
             {
@@ -190,11 +167,11 @@ public:
             }
         }
         const std::size_t width = pool_.width();
-        const auto lists = static_cast<long>(pending_.size());
+        const auto lists = static_cast<long>(pending_.lists().size());
 #pragma omp parallel for schedule(static, 1) if (lists > 1 && omp_get_max_threads() > 1)
         for (long t = 0; t < lists; ++t)
         {
-            const Pending& p = pending_[static_cast<std::size_t>(t)];
+            const PendingStates::List& p = pending_.lists()[static_cast<std::size_t>(t)];
             for (std::size_t i = 0; i < p.slots.size(); ++i)
             {
                 const double* state = p.states.at(static_cast<StatePool::Index>(i));
@@ -400,15 +377,6 @@ private:
     // samples: their weights and states, by particle (before the old layout is dropped).
     void setAsideLeaving(const std::vector<int>& body, const std::vector<const Material<D>*>& materials);
 
-    // The states one thread's evaluations found to commit: slots, and compact states (state i
-    // for slots[i]; in blocks, as the records: grown without a copy, and refilled every step in
-    // the memory they hold).
-    struct Pending
-    {
-        std::vector<std::uint32_t> slots;
-        StatePool states;
-    };
-
     std::string name_ = "sampleHistory";
     bool weighted_ = false;
     std::vector<double> weights_;
@@ -420,8 +388,7 @@ private:
     std::vector<double> initial_;        // the initial state, packed
     bool current_ = false;
     StatePool pool_;
-    std::vector<Pending> pending_;
-    std::vector<Pending> aside_; // setAsidePending()
+    PendingStates pending_; // keepPending()'s, for commit()
     // The samples of particle a are slots offsets_[a] .. offsets_[a + 1]: a itself first, then
     // its neighbours, by global index. Slot k's record, or none (the initial state).
     std::vector<std::size_t> offsets_;
