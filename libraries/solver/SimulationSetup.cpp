@@ -37,7 +37,8 @@ Simulation<D>::Simulation(const CaseDictionaries& dicts, const ControlSettings& 
 
     kernel_ = selectModel<Kernel>(*schemes.kernel, Kernel::Args{D, spacing_}, D);
     formulation_ = selectModel<Formulation<D>>(*schemes.formulation, {}, D);
-    scheme_ = selectModel<Stabilisation<D>>(*schemes.stabilisation, {kernel_.get(), &fields_}, D);
+    scheme_ = selectModel<Stabilisation<D>>(
+        *schemes.stabilisation, {kernel_.get(), &fields_, formulation_->updatesReference()}, D);
     const typename Contact<D>::Args contactArgs{kernel_.get(), bodyNames_};
     if (schemes.contact)
     {

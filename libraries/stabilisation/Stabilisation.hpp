@@ -172,6 +172,9 @@ public:
     {
         const Kernel* kernel = nullptr;
         ParticleFields<D>* fields = nullptr; // for a scheme's own per-particle fields
+        // The formulation moves the reference configuration (updated Lagrangian); false: total
+        // Lagrangian (gradF's elasticState samples then move frames of their own, §G25).
+        bool referenceMoves = true;
     };
 
     virtual ~Stabilisation() = default;

@@ -251,6 +251,17 @@ sph_add_solver_run("plastic impact UL gradF elasticState impenetrability bit-ide
                    ${sphImpact} bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
                    ${sphImpactUL} -set stabilisation.plasticSamples=elasticState
                    -set "sphSchemes.impenetrability={ distance 0.9$<SEMICOLON> }")
+# Total-Lagrangian elasticState (gradF-plastic.md §G25): each particle's frame (F°, G°, x° of the
+# last commit) is a registry field, and a sample reads its neighbour's x° (a ghost's at a rank's
+# edge); every rank moves its frames and rebases its samples at each commit. Distributed, and
+# continued serially from a distributed output.
+set(sphImpactTLFrames -set stabilisation.type=gradF -set stabilisation.plasticSamples=elasticState)
+sph_add_solver_run("plastic impact TL gradF elasticState bit-identical on 2 ranks" 2 ${sphImpact}
+                   bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
+                   ${sphImpactTLFrames})
+sph_add_solver_run("plastic impact TL gradF elasticState restart from 2 on 1 ranks bit-identical" 2
+                   ${sphImpact} restartOn:1:1e-5 -threads 1 -set endTime=1.5e-5
+                   -set writeInterval=5e-6 ${sphImpactTLFrames})
 # The samples' states travel through the output's pieces: written on 2 ranks, continued on 3
 # and serially.
 foreach(second 3 1)
@@ -268,7 +279,9 @@ foreach(test "plastic impact bit-identical on 2 ranks" "plastic impact bit-ident
              "plastic impact UL gradF elasticState stepBound operator bit-identical on 2 ranks"
              "plastic impact UL gradF elasticState impenetrability bit-identical on 2 ranks"
              "plastic impact UL gradF restart from 2 on 3 ranks bit-identical"
-             "plastic impact UL gradF restart from 2 on 1 ranks bit-identical")
+             "plastic impact UL gradF restart from 2 on 1 ranks bit-identical"
+             "plastic impact TL gradF elasticState bit-identical on 2 ranks"
+             "plastic impact TL gradF elasticState restart from 2 on 1 ranks bit-identical")
     set_property(TEST "parallel:sphSolid ${test}" APPEND PROPERTY ENVIRONMENT
                  "SPH_ROUNDOFF_TABLES=energy wall")
 endforeach()

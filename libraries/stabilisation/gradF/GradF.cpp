@@ -22,10 +22,12 @@ Schema GradF<D>::schema()
 {
     return Schema().add(Key::word("plasticSamples",
                                   "materials with history: ownHistory (every stress sample keeps "
-                                  "its own; exact energy), elasticState (updated Lagrangian in "
-                                  "plastic flow: samples carry their elastic state across "
-                                  "reference moves instead of a carried gradient of F; "
-                                  "docs/theory/gradF-plastic.md) or linearised (the return's "
+                                  "its own; exact energy), elasticState (plastic flow: samples "
+                                  "carry their elastic state and extrapolate only the motion "
+                                  "since the last reference move (updated Lagrangian) or the "
+                                  "last step (total Lagrangian, §G25) instead of the total "
+                                  "gradient of F; docs/theory/gradF-plastic.md) or linearised "
+                                  "(the return's "
                                   "correction at F_a, linearised; for comparison)")
                             .choices({"ownHistory", "elasticState", "linearised"})
                             .defaultValue("ownHistory"))
@@ -66,9 +68,10 @@ Schema GradF<D>::schema()
 }
 
 template <int D>
-GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args&)
+GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args& args)
     : linearised_(params.word("plasticSamples") == "linearised"),
       elasticState_(params.word("plasticSamples") == "elasticState"),
+      referenceMoves_(args.referenceMoves),
       weights_(!elasticState_ || params.word("moveWeights") == "kernel" ? MoveWeights::kernel
                : params.word("moveWeights") == "conserving"                ? MoveWeights::conserving
                                                                            : MoveWeights::nonIncreasing),
@@ -198,6 +201,12 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
     const bool carriesK = !ref.K.empty();
     samples_.follow(list, in.body, in.materials, in.globalId, elasticState_ ? &ref.F : nullptr);
     samples_.clearPending(); // this evaluation's states are the ones to commit
+    if (frames_.active())
+    {
+        frames_.start(ref.x); // total Lagrangian: x^r = X
+        frames_.evaluatedAt(in.x);
+        framedList_ = &list;
+    }
     sampleDissipation_.resize(n);
     std::vector<ChunkTally> tallies(chunks.size());
 #pragma omp parallel if (useThreads(n))
@@ -232,8 +241,16 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 // (incl. a).
                 const std::size_t count = list.count(a);
                 const bool bar = particleVolume_ && material.hasHistory();
-                const double smallestSample = fillSamples(kin, count, scratch, bar, bar);
-                if (bar && !(smallestSample > 0.0) && in.counts(a))
+                const bool framed = this->framed(material);
+                if (framed)
+                {
+                    frames_.evaluated(a, kin.F, kin.G);
+                    fillFramedSamples(a, list, kin, scratch);
+                }
+                // (Framed samples are always measured: §G25's admissibility.)
+                const double smallestSample =
+                    fillSamples(kin, count, scratch, bar, bar || framed, framed);
+                if ((bar || framed) && !(smallestSample > 0.0) && in.counts(a))
                 {
                     tally.flagJacobian(a, smallestSample);
                 }
@@ -264,7 +281,14 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 {
                     const double w = scratch.w[j];
                     const Mat<D> wP = w * scratch.P[j];
-                    S.noalias() += wP;
+                    if (framed)
+                    {
+                        S.noalias() += wP * scratch.M[j].transpose(); // (G25.2)
+                    }
+                    else
+                    {
+                        S.noalias() += wP;
+                    }
                     for (int d = 0; d < D; ++d)
                     {
                         Q.slice[static_cast<std::size_t>(d)].noalias() += scratch.xr[j][d] * wP;
@@ -351,6 +375,10 @@ double GradF<D>::energy(const ForceInput<D>& in)
     const ReferenceConfiguration<D>& ref = in.ref;
     const NeighbourList& list = ref.neighbours;
     samples_.follow(list, in.body, in.materials, in.globalId, elasticState_ ? &ref.F : nullptr);
+    if (frames_.active())
+    {
+        frames_.start(ref.x);
+    }
     // Each particle's share in parallel, summed in particle order (thread-count independent).
     const std::size_t n = ref.size();
     std::vector<double> share(n, 0.0);
@@ -369,7 +397,12 @@ double GradF<D>::energy(const ForceInput<D>& in)
             const Kinematics kin = kinematics(a, in.x, ref, false, scratch);
             double sum = 0.0;
             const std::size_t count = list.count(a);
-            fillSamples(kin, count, scratch, particleVolume_ && material.hasHistory());
+            const bool framed = this->framed(material);
+            if (framed)
+            {
+                fillFramedSamples(a, list, kin, scratch);
+            }
+            fillSamples(kin, count, scratch, particleVolume_ && material.hasHistory(), false, framed);
             evaluateSamples(a, material, list, count, scratch.psi.data(), scratch, false);
             if (samples_.weighted() && material.hasHistory())
             {

@@ -22,7 +22,9 @@
 //               increment since the move) and their F^r is the dilation J^(1/D) I (G2.4);
 //               each sample keeps its own state, rebased at every move so that its elastic be
 //               does not change (G4.1); a new pair starts from its neighbour's state. Total
-//               Lagrangian: identical to ownHistory.
+//               Lagrangian (§G25): each particle's frame (F, G and x of the last commit,
+//               SampleFrames.hpp) moves at every commit, the samples extrapolate the step's
+//               increment in it (G25.1) and their states are rebased there as at a move.
 // Sample volume (docs/theory/gradF-plastic.md §G13):
 //   own       each sample's own det F_b(a) (the paper)
 //   particle  every sample of a takes a's volume: F̄_b(a) = (J_a / det F_b(a))^(1/D) F_b(a), the
@@ -43,6 +45,7 @@
 //   fit            | sequential | joint                       | sequential
 
 #include "stabilisation/CsphOperators.hpp"
+#include "stabilisation/gradF/SampleFrames.hpp"
 #include "stabilisation/gradF/SampleHistory.hpp"
 
 namespace sph
@@ -84,6 +87,10 @@ public:
         {
             samples_.declare(materials, fields, weights_ != MoveWeights::kernel);
         }
+        if (elasticState_ && !referenceMoves_)
+        {
+            frames_.declare(fields); // §G25
+        }
     }
     void moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfiguration<D>& ref,
                      const std::vector<int>& body,
@@ -95,12 +102,14 @@ public:
     bool setAsideEvaluation() override
     {
         samples_.setAsidePending();
+        frames_.setAside();
         dissipationAside_.swap(sampleDissipation_);
         return true;
     }
     void restoreEvaluation() override
     {
         samples_.restorePending();
+        frames_.restore();
         dissipationAside_.swap(sampleDissipation_);
     }
     bool movesParticleHistory() const override { return elasticState_; }
@@ -144,8 +153,10 @@ public:
         std::vector<double> nextStates;  // and the states a commit would make of them
         std::vector<std::uint8_t> changed; // (HistoryOf::changed) which of them were written
         std::vector<double> alpha;       // sampleVolume particle: (J_a / det F_b(a))^(1/D)
+        std::vector<Mat<D>> M;           // total-Lagrangian elasticState: M_ab of (G25.1)
         void resize(std::size_t n)
         {
+            M.resize(n);
             alpha.resize(n);
             omega.resize(n);
             dissipation.resize(n);
@@ -162,12 +173,23 @@ public:
                           const ReferenceConfiguration<D>& ref, bool atReference,
                           Scratch& scratch) const;
 
-    // The count stress samples of particle a into scratch.F: F_b(a) = F_a + G_a x^r_ba, or,
-    // with particleVolume, F̄_b(a) (scratch.alpha the factors). With measure, returns the
-    // smallest det F_b(a) (positive unless a sample is inverted, §G13), else +inf
-    // (GradFSampleVolume.cpp).
+    // The count stress samples of particle a into scratch.F: F_b(a) = F_a + G_a x^r_ba (filled:
+    // already there, fillFramedSamples'), or, with particleVolume, F̄_b(a) (scratch.alpha the
+    // factors). With measure, returns the smallest det F_b(a) (positive unless a sample is
+    // inverted, §G13), else +inf (GradFSampleVolume.cpp).
     double fillSamples(const Kinematics& kin, std::size_t count, Scratch& scratch,
-                       bool particleVolume, bool measure = false) const;
+                       bool particleVolume, bool measure = false, bool filled = false) const;
+    // Total-Lagrangian elasticState (§G25): particle a's samples F_a M_ab + G_a[z_ab] (G25.1)
+    // into scratch.F, z_ab into scratch.xr (the offsets the force's Q takes) and M_ab into
+    // scratch.M (GradFSampleFrames.cpp).
+    void fillFramedSamples(std::size_t a, const NeighbourList& list, const Kinematics& kin,
+                           Scratch& scratch) const;
+    // Whether particle a's samples are framed (§G25): a material with history under
+    // total-Lagrangian elasticState.
+    bool framed(const Material<D>& material) const
+    {
+        return frames_.active() && material.hasHistory();
+    }
 
 private:
     // sampleVolume particle: the samples' stresses P̄ at F̄_b(a) in scratch.P become the
@@ -213,6 +235,12 @@ private:
     // samples at the last evaluation (what its commit dissipates).
     bool linearised_ = false;   // plasticSamples linearised
     bool elasticState_ = false; // plasticSamples elasticState
+    bool referenceMoves_ = true; // Args::referenceMoves (false: total Lagrangian)
+    // Total-Lagrangian elasticState (§G25): the samples' frames, and the list of the last force
+    // evaluation (the commit moves the frames along it).
+    SampleFrames<D> frames_;
+    const NeighbourList* framedList_ = nullptr;
+    void moveSampleFrames(const HistoryCommit<D>& in); // GradFSampleFrames.cpp
     // moveWeights (§G9): the samples' energy weights are chosen at each move (per-pair state in
     // samples_), and the evaluation after a move (weightsDue_) chooses them.
     enum class MoveWeights

@@ -87,6 +87,10 @@ double GradF<D>::commitHistory(const HistoryCommit<D>& in)
     }
     commitParticleHistory(in);
     samples_.commit();
+    if (frames_.active())
+    {
+        moveSampleFrames(in); // §G25
+    }
     double total = 0.0;
     for (std::size_t b = 0; b < in.bodies.size(); ++b)
     {

@@ -12,21 +12,23 @@ namespace sph
 
 template <int D>
 double GradF<D>::fillSamples(const Kinematics& kin, std::size_t count, Scratch& scratch,
-                             bool particleVolume, bool measure) const
+                             bool particleVolume, bool measure, bool filled) const
 {
     double smallest = std::numeric_limits<double>::infinity();
-    if (!particleVolume && !measure)
+    if (!filled)
     {
         for (std::size_t j = 0; j < count; ++j)
         {
             scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
         }
+    }
+    if (!particleVolume && !measure)
+    {
         return smallest;
     }
     const double Ja = kin.F.determinant();
     for (std::size_t j = 0; j < count; ++j)
     {
-        scratch.F[j] = kin.F + kin.G.contract(scratch.xr[j]);
         const double Jb = scratch.F[j].determinant();
         smallest = std::min(smallest, Jb);
         if (particleVolume)
@@ -54,9 +56,9 @@ double GradF<D>::chainParticleVolume(std::size_t count, Scratch& scratch) const
     return pressure;
 }
 
-template double GradF<1>::fillSamples(const Kinematics&, std::size_t, Scratch&, bool, bool) const;
-template double GradF<2>::fillSamples(const Kinematics&, std::size_t, Scratch&, bool, bool) const;
-template double GradF<3>::fillSamples(const Kinematics&, std::size_t, Scratch&, bool, bool) const;
+template double GradF<1>::fillSamples(const Kinematics&, std::size_t, Scratch&, bool, bool, bool) const;
+template double GradF<2>::fillSamples(const Kinematics&, std::size_t, Scratch&, bool, bool, bool) const;
+template double GradF<3>::fillSamples(const Kinematics&, std::size_t, Scratch&, bool, bool, bool) const;
 template double GradF<1>::chainParticleVolume(std::size_t, Scratch&) const;
 template double GradF<2>::chainParticleVolume(std::size_t, Scratch&) const;
 template double GradF<3>::chainParticleVolume(std::size_t, Scratch&) const;

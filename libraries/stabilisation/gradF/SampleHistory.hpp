@@ -187,11 +187,14 @@ public:
 
     // Every sample of a particle with history gets a record of its own (a move of the
     // reference is about to re-express them all in place: rebase()).
-    void storeEveryState(const std::vector<int>& body, const std::vector<Material<D>*>& materials)
+    // (materials by body: Material<D>* or const Material<D>*, null for a body without history.)
+    template <class Materials>
+    void storeEveryState(const std::vector<int>& body, const Materials& materials)
     {
         for (std::size_t a = 0; a + 1 < offsets_.size(); ++a)
         {
-            if (materials[static_cast<std::size_t>(body[a])]->historyComponents() == 0)
+            const auto* material = materials[static_cast<std::size_t>(body[a])];
+            if (!material || material->historyComponents() == 0)
             {
                 continue;
             }

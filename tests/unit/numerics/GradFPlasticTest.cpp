@@ -21,6 +21,8 @@
 #include <map>
 
 using namespace sph;
+using sph::test::affine;
+using sph::test::mapped;
 
 namespace
 {
@@ -31,31 +33,6 @@ const char* kElasticJ2 = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 1
 const char* kDP = "type druckerPrager; E 2.5; nu 0.3; rho 1; frictionAngle 30; "
                   "dilatancyAngle 30; cohesion 0.01;";
 const char* kElasticState = "type gradF; plasticSamples elasticState;";
-
-template <int D>
-Mat<D> affine(double scale, unsigned seed)
-{
-    Mat<D> A = Mat<D>::Identity();
-    for (int i = 0; i < D; ++i)
-    {
-        for (int j = 0; j < D; ++j)
-        {
-            A(i, j) += scale * std::cos(seed + 5.0 * i + 3.0 * j);
-        }
-    }
-    return A;
-}
-
-template <int D>
-std::vector<Vec<D>> mapped(const Mat<D>& A, const std::vector<Vec<D>>& x)
-{
-    std::vector<Vec<D>> y(x.size());
-    for (std::size_t a = 0; a < x.size(); ++a)
-    {
-        y[a] = A * x[a];
-    }
-    return y;
-}
 
 // W at F from one packed state (the samples' evaluation).
 template <int D>

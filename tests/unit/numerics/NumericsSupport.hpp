@@ -149,10 +149,11 @@ struct SchemeFixture
     ReferenceConfiguration<D> ref;
 
     // updated: use the deformed reference configuration of spec §7 (else x^r = X).
+    // referenceMoves: Stabilisation::Args' (false: as a total-Lagrangian run builds the scheme).
     SchemeFixture(const std::vector<Vec<D>>& points, const std::string& schemeText,
                   const std::string& materialText, bool updated, double hOverDx = 1.4,
                   const std::string& kernelName = "cubicSpline", unsigned seed = 1,
-                  bool deficientSupports = false)
+                  bool deficientSupports = false, bool referenceMoves = true)
         : X(points)
     {
         const std::size_t n = points.size();
@@ -180,7 +181,7 @@ struct SchemeFixture
             }
         }
         kernel = makeKernel(kernelName, D, spacing, hOverDx);
-        scheme = build<Stabilisation<D>>(schemeText, {kernel.get()}, D);
+        scheme = build<Stabilisation<D>>(schemeText, {kernel.get(), nullptr, referenceMoves}, D);
         if (!scheme->referenceNeeds(*kernel).gradientOfF)
         {
             ref.K.clear();
