@@ -16,15 +16,13 @@
 using namespace sph;
 using sph::test::affine;
 using sph::test::mapped;
+using sph::test::kDP;
+using sph::test::kElasticJ2;
+using sph::test::kPlastic;
 
 namespace
 {
 
-const char* kPlastic = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 0.02; "
-                       "hardeningModulus 0.2;";
-const char* kElasticJ2 = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 1e30;";
-const char* kDP = "type druckerPrager; E 2.5; nu 0.3; rho 1; frictionAngle 30; "
-                  "dilatancyAngle 30; cohesion 0.01;";
 const char* kFramed = "type gradF; plasticSamples elasticState;";
 const char* kFramedJoint = "type gradF; plasticSamples elasticState; fit joint;";
 

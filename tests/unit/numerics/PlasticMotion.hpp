@@ -7,6 +7,14 @@
 namespace sph::test
 {
 
+// The materials of these tests, in units where the cloud's spacing is 1: yielding from a strain
+// of 0.8 % with hardening, elastic only (a yield stress never reached), and a frictional one.
+inline const char* const kPlastic = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 0.02; "
+                                    "hardeningModulus 0.2;";
+inline const char* const kElasticJ2 = "type j2Plasticity; E 2.5; nu 0.3; rho 1; yieldStress 1e30;";
+inline const char* const kDP = "type druckerPrager; E 2.5; nu 0.3; rho 1; frictionAngle 30; "
+                               "dilatancyAngle 30; cohesion 0.01;";
+
 // An affine map I + scale (cos terms) (seed: which), and points mapped by one.
 template <int D>
 Mat<D> affine(double scale, unsigned seed)
