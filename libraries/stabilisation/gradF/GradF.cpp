@@ -98,6 +98,25 @@ GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args& arg
                     {"hint: add 'plasticSamples elasticState;' (with formulation "
                      "updatedLagrangian) or remove openedSamples"});
     }
+    // Both act at reference moves, which a total-Lagrangian run never makes (its elasticState
+    // frames move at the commits, §G25, with the reference's fixed weights).
+    if (!referenceMoves_ && params.given("moveWeights") && params.word("moveWeights") != "kernel")
+    {
+        params.fail("moveWeights",
+                    "moveWeights " + params.word("moveWeights") +
+                        " chooses the samples' energy weights at each reference move, and "
+                        "formulation totalLagrangian never moves its reference",
+                    {"hint: remove moveWeights (kernel, the default), or use formulation "
+                     "updatedLagrangian"});
+    }
+    if (!referenceMoves_ && openedFromParticle_)
+    {
+        params.fail("openedSamples",
+                    "openedSamples particle acts at each reference move, and formulation "
+                    "totalLagrangian never moves its reference",
+                    {"hint: remove openedSamples (own, the default), or use formulation "
+                     "updatedLagrangian"});
+    }
     // In 1D F̄_b(a) = (J_a / F_b) F_b = F_a for every sample: nothing of gradF would be left.
     if (D == 1 && particleVolume_)
     {
