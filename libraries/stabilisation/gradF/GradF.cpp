@@ -261,9 +261,13 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 const std::size_t count = list.count(a);
                 const bool bar = particleVolume_ && material.hasHistory();
                 const bool framed = this->framed(material);
+                if (frames_.active())
+                {
+                    // Every particle's (a body without history too: its frame is written out).
+                    frames_.evaluated(a, kin.F, kin.G);
+                }
                 if (framed)
                 {
-                    frames_.evaluated(a, kin.F, kin.G);
                     fillFramedSamples(a, list, kin, scratch);
                 }
                 // (Framed samples are always measured: §G25's admissibility.)
