@@ -107,6 +107,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
         frames_.start(ref.x); // total Lagrangian: x^r = X
         frames_.evaluatedAt(in.x);
         framedList_ = &list;
+        frameCw_.resize(n);
     }
     sampleDissipation_.resize(n);
     std::vector<ChunkTally> tallies(chunks.size());
@@ -143,14 +144,14 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 const std::size_t count = list.count(a);
                 const bool bar = particleVolume_ && material.hasHistory();
                 const bool framed = this->framed(material);
+                if (framed)
+                {
+                    fillFramedSamples(a, in.x, list, kin, scratch);
+                }
                 if (frames_.active())
                 {
                     // Every particle's (a body without history too: its frame is written out).
-                    frames_.evaluated(a, kin.F, kin.G);
-                }
-                if (framed)
-                {
-                    fillFramedSamples(a, list, kin, scratch);
+                    frames_.evaluated(a, kin.F, framed ? scratch.frame.H : Tensor3<D>::zero());
                 }
                 // (Framed samples are always measured: §G25's admissibility.)
                 const double smallestSample =
@@ -186,14 +187,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 {
                     const double w = scratch.w[j];
                     const Mat<D> wP = w * scratch.P[j];
-                    if (framed)
-                    {
-                        S.noalias() += wP * scratch.M[j].transpose(); // (G25.2)
-                    }
-                    else
-                    {
-                        S.noalias() += wP;
-                    }
+                    S.noalias() += wP;
                     for (int d = 0; d < D; ++d)
                     {
                         Q.slice[static_cast<std::size_t>(d)].noalias() += scratch.xr[j][d] * wP;
@@ -224,16 +218,26 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                         A.noalias() += Q.slice[dd] * ref.K[a].slice[dd].transpose();
                     }
                 }
+                Vec<D> frameSelfTerm = Vec<D>::Zero();
+                if (framed)
+                {
+                    frameForceTerms(a, in.V0[a], scratch.frame, A, B, frameSelfTerm); // (G26.3)
+                }
+                else if (frames_.active())
+                {
+                    frameCw_[a].setZero();
+                }
                 if (jointFit_)
                 {
                     jointForceTerms(a, in.V0[a], A, B); // (G17.3)
+                    selfTerm_[a] += frameSelfTerm;
                     continue;
                 }
                 const MatDM C = contractMonomials<D, MatDM>(B) * Zinv_[a];
                 const Mat<D> Atilde = A - C * Y_[a];
                 UL_[a] = in.V0[a] * Atilde * ref.gradient.L[a];
                 Cw_[a] = (in.V0[a] * invDenominator_[a]) * C;
-                selfTerm_[a] = in.V0[a] * (C * s_[a]);
+                selfTerm_[a] = in.V0[a] * (C * s_[a]) + frameSelfTerm;
             }
         }
         // T_c = -V^r_c Σ_{a≠c} [UL_a d_ac + W_ca Cw_a z_ac] - UL_c e_c + V0_c C_c s_c
@@ -250,6 +254,10 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                     const std::size_t a = list.indices[k];
                     const Vec<D> xr = ref.x[a] - ref.x[c];
                     sum.noalias() += values.W[j] * (Cw_[a] * monomials<D>(xr) - UL_[a] * xr);
+                    if (frames_.active())
+                    {
+                        sum.noalias() += values.W[j] * (frameCw_[a] * framedMonomials(a, c));
+                    }
                 }
                 out.T[c] = -ref.V[c] * sum + selfTerm_[c];
                 continue;
@@ -260,6 +268,10 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 const Vec<D> xr = ref.x[a] - ref.x[c];
                 sum.noalias() += UL_[a] * (values.dWdrOverR[j] * xr); // d_ac = ∇W_ac = -∇W_ca
                 sum.noalias() += values.W[j] * (Cw_[a] * monomials<D>(xr));
+                if (frames_.active())
+                {
+                    sum.noalias() += values.W[j] * (frameCw_[a] * framedMonomials(a, c));
+                }
             }
             out.T[c] = -ref.V[c] * sum - UL_[c] * ref.gradient.e[c] + selfTerm_[c];
         }
@@ -305,7 +317,7 @@ double GradF<D>::energy(const ForceInput<D>& in)
             const bool framed = this->framed(material);
             if (framed)
             {
-                fillFramedSamples(a, list, kin, scratch);
+                fillFramedSamples(a, in.x, list, kin, scratch);
             }
             fillSamples(kin, count, scratch, particleVolume_ && material.hasHistory(), false, framed);
             evaluateSamples(a, material, list, count, scratch.psi.data(), scratch, false);

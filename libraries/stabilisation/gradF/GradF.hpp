@@ -22,9 +22,10 @@
 //               increment since the move) and their F^r is the dilation J^(1/D) I (G2.4);
 //               each sample keeps its own state, rebased at every move so that its elastic be
 //               does not change (G4.1); a new pair starts from its neighbour's state. Total
-//               Lagrangian (§G25): each particle's frame (F, G and x of the last commit,
+//               Lagrangian (§G25-§G26): each particle's frame (F and x of the last commit,
 //               SampleFrames.hpp) moves at every commit, the samples extrapolate the step's
-//               increment in it (G25.1) and their states are rebased there as at a move.
+//               increment, its gradient fitted in the frame (G26.1-G26.2), and their states
+//               are rebased there as at a move.
 // Sample volume (docs/theory/gradF-plastic.md §G13):
 //   own       each sample's own det F_b(a) (the paper)
 //   particle  every sample of a takes a's volume: F̄_b(a) = (J_a / det F_b(a))^(1/D) F_b(a), the
@@ -153,10 +154,18 @@ public:
         std::vector<double> nextStates;  // and the states a commit would make of them
         std::vector<std::uint8_t> changed; // (HistoryOf::changed) which of them were written
         std::vector<double> alpha;       // sampleVolume particle: (J_a / det F_b(a))^(1/D)
-        std::vector<Mat<D>> M;           // total-Lagrangian elasticState: M_ab of (G25.1)
+        // Total-Lagrangian elasticState (§G26): the fit of the step's increment in the frame,
+        // what its force (G26.3) takes of it.
+        struct FrameFit
+        {
+            MatM Zinv;          // Z°_a⁻¹, regularised as the paper's Z_a⁻¹
+            MatMD Y;            // Y°_a = Σ_b Ŵ_ab z(y°_ab) ⊗ y°_ab
+            MonomialVec<D> s;   // s°_a = Σ_b Ŵ_ab z(y°_ab)
+            Mat<D> inverseFrameF; // F°_a⁻¹
+            Tensor3<D> H;       // H°_a of (G26.2)
+        } frame;
         void resize(std::size_t n)
         {
-            M.resize(n);
             alpha.resize(n);
             omega.resize(n);
             dissipation.resize(n);
@@ -179,11 +188,11 @@ public:
     // inverted, §G13), else +inf (GradFSampleVolume.cpp).
     double fillSamples(const Kinematics& kin, std::size_t count, Scratch& scratch,
                        bool particleVolume, bool measure = false, bool filled = false) const;
-    // Total-Lagrangian elasticState (§G25): particle a's samples F_a M_ab + G_a[z_ab] (G25.1)
-    // into scratch.F, z_ab into scratch.xr (the offsets the force's Q takes) and M_ab into
-    // scratch.M (GradFSampleFrames.cpp).
-    void fillFramedSamples(std::size_t a, const NeighbourList& list, const Kinematics& kin,
-                           Scratch& scratch) const;
+    // Total-Lagrangian elasticState (§G26): particle a's samples F_a + H°_a[y°_ab] F°_a (G26.1)
+    // at positions x into scratch.F, y°_ab into scratch.xr (the offsets the force's Q takes)
+    // and the fit of H°_a (G26.2) into scratch.frame (GradFSampleFrames.cpp). Reads scratch.w.
+    void fillFramedSamples(std::size_t a, const std::vector<Vec<D>>& x, const NeighbourList& list,
+                           const Kinematics& kin, Scratch& scratch) const;
     // Whether particle a's samples are framed (§G25): a material with history under
     // total-Lagrangian elasticState.
     bool framed(const Material<D>& material) const
@@ -240,6 +249,18 @@ private:
     // evaluation (the commit moves the frames along it).
     SampleFrames<D> frames_;
     const NeighbourList* framedList_ = nullptr;
+    // V0_a C°_a / Σ_e W_ae V^r_e of (G26.3), gathered over the frame's offsets (zero for a
+    // particle whose samples are not framed).
+    std::vector<MatDM> frameCw_;
+    // (G26.3): the samples' derivative with respect to H°_a (B arrives as Q_a, total Lagrangian)
+    // moved onto F_a (into A) and the pairs (frameCw_, selfTerm); B is left zero: the fit in X
+    // carries no H (GradFSampleFrames.cpp).
+    void frameForceTerms(std::size_t a, double V0, const typename Scratch::FrameFit& fit,
+                         Mat<D>& A, Tensor3<D>& B, Vec<D>& selfTerm);
+    MonomialVec<D> framedMonomials(std::size_t a, std::size_t c) const
+    {
+        return monomials<D>(Vec<D>(frames_.position(a) - frames_.position(c)));
+    }
     void moveSampleFrames(const HistoryCommit<D>& in); // GradFSampleFrames.cpp
     // moveWeights (§G9): the samples' energy weights are chosen at each move (per-pair state in
     // samples_), and the evaluation after a move (weightsDue_) chooses them.

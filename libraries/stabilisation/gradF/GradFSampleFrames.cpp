@@ -1,21 +1,71 @@
-// gradF's elasticState samples in total-Lagrangian form (docs/theory/gradF-plastic.md §G25):
-// the samples of the step's increment in their particle's frame (G25.1), and the frames moved
-// at each commit with every sample's elastic state kept. The frames themselves are
-// SampleFrames.hpp; the force (G25.2) is GradF.cpp's with M_ab and z_ab.
+// gradF's elasticState samples in total-Lagrangian form (docs/theory/gradF-plastic.md §G25-§G26):
+// the samples of the step's increment in their particle's frame (G26.1), its gradient fitted
+// there (G26.2), and the frames moved at each commit with every sample's elastic state kept.
+// The frames themselves are SampleFrames.hpp; the force (G26.3) is GradF.cpp's.
 #include "stabilisation/gradF/GradF.hpp"
+#include "stabilisation/gradF/MonomialTensors.hpp"
+#include "stabilisation/gradF/RegularisedInverse.hpp"
 
 #include <stdexcept>
 
 namespace sph
 {
 
+// (G26.2): H°_a by least squares in the frame's configuration with the increment f_a = F_a F°_a⁻¹
+// fixed, as the paper fits H_a with f_a fixed (spec §6.2), over the same list and weights:
+// c°_a = [Σ_b Ŵ_ab x_ba ⊗ z(y°_ab) − f_a Y°_aᵀ] Z°_a⁻¹. In the first step (x° = X, F° = I) these
+// are the paper's sums in the paper's order, so the samples are its samples bit for bit.
 template <int D>
-void GradF<D>::fillFramedSamples(std::size_t a, const NeighbourList& list, const Kinematics& kin,
+void GradF<D>::fillFramedSamples(std::size_t a, const std::vector<Vec<D>>& x,
+                                 const NeighbourList& list, const Kinematics& kin,
                                  Scratch& scratch) const
 {
-    frames_.offsets(a, list, scratch.xr.data(), scratch.M.data());
-    SampleFrames<D>::samples(kin.F, kin.G, scratch.xr.data(), scratch.M.data(), list.count(a),
-                             scratch.F.data());
+    typename Scratch::FrameFit& fit = scratch.frame;
+    const std::size_t first = list.begin(a);
+    const std::size_t count = list.count(a);
+    frames_.offsets(a, list, scratch.xr.data());
+    MatM Z = MatM::Zero();
+    MonomialVec<D> s = MonomialVec<D>::Zero();
+    MatMD Y = MatMD::Zero();
+    MatDM R = MatDM::Zero();
+    const Vec<D> xa = x[a];
+    for (std::size_t j = 1; j < count; ++j)
+    {
+        const Vec<D>& y = scratch.xr[j];
+        const MonomialVec<D> z = monomials<D>(y);
+        const double w = scratch.w[j];
+        Z.noalias() += w * z * z.transpose();
+        s += w * z;
+        Y.noalias() += w * z * y.transpose();
+        R.noalias() += (w * (x[list.indices[first + j]] - xa)) * z.transpose();
+    }
+    fit.Zinv = regularisedInverse(Z, Z.trace() / M, smallestEigenvalue);
+    fit.Y = Y;
+    fit.s = s;
+    fit.inverseFrameF = frames_.frameF(a).inverse();
+    const Mat<D> f = kin.F * fit.inverseFrameF;
+    fit.H = hessianFromCoefficients<D>(MatDM((R - f * Y.transpose()) * fit.Zinv));
+    frames_.samples(a, kin.F, fit.H, scratch.xr.data(), count, scratch.F.data());
+}
+
+// δΠ_a through H°_a: with B~°_a = [Σ_b Ŵ_ab y°_ab,k P_b F°_aᵀ] in the monomials' columns and
+// C°_a = B~°_a Z°_a⁻¹, δΠ_a = V0_a C°_a : [Σ_b Ŵ_ab δx_ba ⊗ z(y°_ab) − δF_a F°_a⁻¹ Y°_aᵀ], so
+// ∂Π/∂F_a gains −V0_a C°_a Y°_a F°_a⁻ᵀ and the pairs V0_a C°_a z(y°_ab), as the paper's C_a takes
+// z(x^r_ab) (spec §6.4).
+template <int D>
+void GradF<D>::frameForceTerms(std::size_t a, double V0, const typename Scratch::FrameFit& fit,
+                               Mat<D>& A, Tensor3<D>& B, Vec<D>& selfTerm)
+{
+    const Mat<D> frameFT = frames_.frameF(a).transpose();
+    for (std::size_t k = 0; k < static_cast<std::size_t>(D); ++k)
+    {
+        B.slice[k] = B.slice[k] * frameFT;
+    }
+    const MatDM C = contractMonomials<D, MatDM>(B) * fit.Zinv;
+    A.noalias() -= C * fit.Y * fit.inverseFrameF.transpose();
+    frameCw_[a] = (V0 * invDenominator_[a]) * C;
+    selfTerm = V0 * (C * fit.s);
+    B = Tensor3<D>::zero();
 }
 
 // After the commit of the last evaluation's states: each sample's state re-expressed at the
@@ -56,9 +106,9 @@ void GradF<D>::moveSampleFrames(const HistoryCommit<D>& in)
                 continue;
             }
             const std::size_t count = list.count(a);
-            frames_.offsets(a, list, scratch.xr.data(), scratch.M.data());
-            SampleFrames<D>::samples(frames_.evaluatedF(a), frames_.evaluatedG(a),
-                                     scratch.xr.data(), scratch.M.data(), count, scratch.F.data());
+            frames_.offsets(a, list, scratch.xr.data());
+            frames_.samples(a, frames_.evaluatedF(a), frames_.evaluatedH(a), scratch.xr.data(),
+                            count, scratch.F.data());
             scratch.states.resize(count * samples_.stride());
             samples_.rebase(list.begin(a), count, *material, scratch.F.data(),
                             frames_.evaluatedF(a), scratch.states.data());
@@ -67,12 +117,18 @@ void GradF<D>::moveSampleFrames(const HistoryCommit<D>& in)
     frames_.move();
 }
 
-template void GradF<1>::fillFramedSamples(std::size_t, const NeighbourList&, const Kinematics&,
-                                          Scratch&) const;
-template void GradF<2>::fillFramedSamples(std::size_t, const NeighbourList&, const Kinematics&,
-                                          Scratch&) const;
-template void GradF<3>::fillFramedSamples(std::size_t, const NeighbourList&, const Kinematics&,
-                                          Scratch&) const;
+template void GradF<1>::fillFramedSamples(std::size_t, const std::vector<Vec<1>>&,
+                                          const NeighbourList&, const Kinematics&, Scratch&) const;
+template void GradF<2>::fillFramedSamples(std::size_t, const std::vector<Vec<2>>&,
+                                          const NeighbourList&, const Kinematics&, Scratch&) const;
+template void GradF<3>::fillFramedSamples(std::size_t, const std::vector<Vec<3>>&,
+                                          const NeighbourList&, const Kinematics&, Scratch&) const;
+template void GradF<1>::frameForceTerms(std::size_t, double, const Scratch::FrameFit&, Mat<1>&,
+                                        Tensor3<1>&, Vec<1>&);
+template void GradF<2>::frameForceTerms(std::size_t, double, const Scratch::FrameFit&, Mat<2>&,
+                                        Tensor3<2>&, Vec<2>&);
+template void GradF<3>::frameForceTerms(std::size_t, double, const Scratch::FrameFit&, Mat<3>&,
+                                        Tensor3<3>&, Vec<3>&);
 template void GradF<1>::moveSampleFrames(const HistoryCommit<1>&);
 template void GradF<2>::moveSampleFrames(const HistoryCommit<2>&);
 template void GradF<3>::moveSampleFrames(const HistoryCommit<3>&);
