@@ -262,6 +262,10 @@ sph_add_solver_run("plastic impact TL gradF elasticState bit-identical on 2 rank
 sph_add_solver_run("plastic impact TL gradF elasticState restart from 2 on 1 ranks bit-identical" 2
                    ${sphImpact} restartOn:1:1e-5 -threads 1 -set endTime=1.5e-5
                    -set writeInterval=5e-6 ${sphImpactTLFrames})
+# The joint fit's frame terms (§G26: the increment fitted in x°, its pairs' linear part too).
+sph_add_solver_run("plastic impact TL gradF elasticState fit joint bit-identical on 2 ranks" 2
+                   ${sphImpact} bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
+                   ${sphImpactTLFrames} -set stabilisation.fit=joint)
 # The samples' states travel through the output's pieces: written on 2 ranks, continued on 3
 # and serially.
 foreach(second 3 1)
@@ -281,7 +285,8 @@ foreach(test "plastic impact bit-identical on 2 ranks" "plastic impact bit-ident
              "plastic impact UL gradF restart from 2 on 3 ranks bit-identical"
              "plastic impact UL gradF restart from 2 on 1 ranks bit-identical"
              "plastic impact TL gradF elasticState bit-identical on 2 ranks"
-             "plastic impact TL gradF elasticState restart from 2 on 1 ranks bit-identical")
+             "plastic impact TL gradF elasticState restart from 2 on 1 ranks bit-identical"
+             "plastic impact TL gradF elasticState fit joint bit-identical on 2 ranks")
     set_property(TEST "parallel:sphSolid ${test}" APPEND PROPERTY ENVIRONMENT
                  "SPH_ROUNDOFF_TABLES=energy wall")
 endforeach()

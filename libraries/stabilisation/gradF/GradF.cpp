@@ -108,6 +108,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
         frames_.evaluatedAt(in.x);
         framedList_ = &list;
         frameCw_.resize(n);
+        frameUL_.resize(jointFit_ ? n : 0);
     }
     sampleDissipation_.resize(n);
     std::vector<ChunkTally> tallies(chunks.size());
@@ -226,6 +227,10 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 else if (frames_.active())
                 {
                     frameCw_[a].setZero();
+                    if (jointFit_)
+                    {
+                        frameUL_[a].setZero();
+                    }
                 }
                 if (jointFit_)
                 {
@@ -256,7 +261,9 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                     sum.noalias() += values.W[j] * (Cw_[a] * monomials<D>(xr) - UL_[a] * xr);
                     if (frames_.active())
                     {
-                        sum.noalias() += values.W[j] * (frameCw_[a] * framedMonomials(a, c));
+                        const Vec<D> y = frameOffset(a, c); // (G26.5)
+                        sum.noalias() +=
+                            values.W[j] * (frameCw_[a] * monomials<D>(y) - frameUL_[a] * y);
                     }
                 }
                 out.T[c] = -ref.V[c] * sum + selfTerm_[c];
@@ -270,7 +277,8 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 sum.noalias() += values.W[j] * (Cw_[a] * monomials<D>(xr));
                 if (frames_.active())
                 {
-                    sum.noalias() += values.W[j] * (frameCw_[a] * framedMonomials(a, c));
+                    sum.noalias() +=
+                        values.W[j] * (frameCw_[a] * monomials<D>(frameOffset(a, c)));
                 }
             }
             out.T[c] = -ref.V[c] * sum - UL_[c] * ref.gradient.e[c] + selfTerm_[c];

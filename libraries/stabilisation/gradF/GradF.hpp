@@ -163,6 +163,8 @@ public:
             MonomialVec<D> s;   // s°_a = Σ_b Ŵ_ab z(y°_ab)
             Mat<D> inverseFrameF; // F°_a⁻¹
             Tensor3<D> H;       // H°_a of (G26.2)
+            MatP Ainv;          // fit joint: A°_a⁻¹ of (G26.4)
+            Vec<D> moment;      // fit joint: Σ_b Ŵ_ab y°_ab
         } frame;
         void resize(std::size_t n)
         {
@@ -252,14 +254,15 @@ private:
     // V0_a C°_a / Σ_e W_ae V^r_e of (G26.3), gathered over the frame's offsets (zero for a
     // particle whose samples are not framed).
     std::vector<MatDM> frameCw_;
+    std::vector<Mat<D>> frameUL_; // fit joint (G26.5): the linear part of V0_a N°_a / Σ_e W_ae V^r_e
     // (G26.3): the samples' derivative with respect to H°_a (B arrives as Q_a, total Lagrangian)
     // moved onto F_a (into A) and the pairs (frameCw_, selfTerm); B is left zero: the fit in X
     // carries no H (GradFSampleFrames.cpp).
     void frameForceTerms(std::size_t a, double V0, const typename Scratch::FrameFit& fit,
                          Mat<D>& A, Tensor3<D>& B, Vec<D>& selfTerm);
-    MonomialVec<D> framedMonomials(std::size_t a, std::size_t c) const
+    Vec<D> frameOffset(std::size_t a, std::size_t c) const
     {
-        return monomials<D>(Vec<D>(frames_.position(a) - frames_.position(c)));
+        return frames_.position(a) - frames_.position(c);
     }
     void moveSampleFrames(const HistoryCommit<D>& in); // GradFSampleFrames.cpp
     // moveWeights (§G9): the samples' energy weights are chosen at each move (per-pair state in

@@ -27,7 +27,9 @@ void GradF<D>::fillFramedSamples(std::size_t a, const std::vector<Vec<D>>& x,
     MatM Z = MatM::Zero();
     MonomialVec<D> s = MonomialVec<D>::Zero();
     MatMD Y = MatMD::Zero();
-    MatDM R = MatDM::Zero();
+    Mat<D> Mxx = Mat<D>::Zero(); // fit joint
+    Vec<D> moment = Vec<D>::Zero();
+    MatDP R = MatDP::Zero(); // Σ_b Ŵ_ab x_ba ⊗ p°_ab (sequential: its monomial columns only)
     const Vec<D> xa = x[a];
     for (std::size_t j = 1; j < count; ++j)
     {
@@ -37,14 +39,33 @@ void GradF<D>::fillFramedSamples(std::size_t a, const std::vector<Vec<D>>& x,
         Z.noalias() += w * z * z.transpose();
         s += w * z;
         Y.noalias() += w * z * y.transpose();
-        R.noalias() += (w * (x[list.indices[first + j]] - xa)) * z.transpose();
+        const Vec<D> wxba = w * (x[list.indices[first + j]] - xa);
+        if (jointFit_)
+        {
+            Mxx.noalias() += (w * y) * y.transpose();
+            moment += w * y;
+            R.template leftCols<D>().noalias() += wxba * y.transpose();
+        }
+        R.template rightCols<M>().noalias() += wxba * z.transpose();
     }
-    fit.Zinv = regularisedInverse(Z, Z.trace() / M, smallestEigenvalue);
-    fit.Y = Y;
     fit.s = s;
     fit.inverseFrameF = frames_.frameF(a).inverse();
-    const Mat<D> f = kin.F * fit.inverseFrameF;
-    fit.H = hessianFromCoefficients<D>(MatDM((R - f * Y.transpose()) * fit.Zinv));
+    if (jointFit_)
+    {
+        // (G26.4): f and H° of the increment from one fit in x°, as (G17.2) in x^r.
+        invertJointMatrix(Mxx, Y, Z, fit.Ainv);
+        fit.moment = moment;
+        const MatDP fc = R * fit.Ainv;
+        fit.H = hessianFromCoefficients<D>(MatDM(fc.template rightCols<M>()));
+    }
+    else
+    {
+        fit.Zinv = regularisedInverse(Z, Z.trace() / M, smallestEigenvalue);
+        fit.Y = Y;
+        const Mat<D> f = kin.F * fit.inverseFrameF;
+        fit.H = hessianFromCoefficients<D>(
+            MatDM((R.template rightCols<M>() - f * Y.transpose()) * fit.Zinv));
+    }
     frames_.samples(a, kin.F, fit.H, scratch.xr.data(), count, scratch.F.data());
 }
 
@@ -61,10 +82,23 @@ void GradF<D>::frameForceTerms(std::size_t a, double V0, const typename Scratch:
     {
         B.slice[k] = B.slice[k] * frameFT;
     }
-    const MatDM C = contractMonomials<D, MatDM>(B) * fit.Zinv;
-    A.noalias() -= C * fit.Y * fit.inverseFrameF.transpose();
-    frameCw_[a] = (V0 * invDenominator_[a]) * C;
-    selfTerm = V0 * (C * fit.s);
+    if (jointFit_)
+    {
+        // (G26.5): H° depends on x through the pairs only, N°_a = V0_a [0 | B~°_a] A°_a⁻¹.
+        MatDP E = MatDP::Zero();
+        E.template rightCols<M>() = contractMonomials<D, MatDM>(B);
+        const MatDP N = V0 * (E * fit.Ainv);
+        frameUL_[a] = invDenominator_[a] * N.template leftCols<D>();
+        frameCw_[a] = invDenominator_[a] * N.template rightCols<M>();
+        selfTerm = N.template leftCols<D>() * fit.moment + N.template rightCols<M>() * fit.s;
+    }
+    else
+    {
+        const MatDM C = contractMonomials<D, MatDM>(B) * fit.Zinv;
+        A.noalias() -= C * fit.Y * fit.inverseFrameF.transpose();
+        frameCw_[a] = (V0 * invDenominator_[a]) * C;
+        selfTerm = V0 * (C * fit.s);
+    }
     B = Tensor3<D>::zero();
 }
 

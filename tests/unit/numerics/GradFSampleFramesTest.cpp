@@ -1,11 +1,13 @@
-// gradF's elasticState samples in total-Lagrangian form (docs/theory/gradF-plastic.md §G25): each
-// particle's frame (F°, G°, x° of the last commit), the samples of the step's increment in it
-// (G25.1), the frames moved at each commit with every sample's elastic state kept:
+// gradF's elasticState samples in total-Lagrangian form (docs/theory/gradF-plastic.md §G25-§G26):
+// each particle's frame (F°, x° of the last commit), the samples of the step's increment in it
+// with its gradient fitted there (G26.1, G26.2 / G26.4), the frames moved at each commit with
+// every sample's elastic state kept:
 //   - the first step is the paper's: before any commit every force and energy equals
-//     ownHistory's bit for bit; along affine motions (G = 0) after commits too, to round-off;
+//     ownHistory's bit for bit (the joint fit's forces to round-off); along affine motions
+//     (H° = 0) after commits too, to round-off;
 //   - a commit moves the frames and keeps Π (every sample's be), where the samples differ from
 //     F_a; in plastic flow Π after the commit is the paper's after the same commit;
-//   - force = −∂Π/∂x between commits, with frames that are not the reference's;
+//   - force = −∂Π/∂x between commits, with frames that are not the reference's, both fits;
 //   - objective: a rotated, yielded configuration rotates the forces, no scalar changes;
 //   - admissible: after steps on a distorted cloud every sample has det > 0, at the cloud's
 //     one-sided edge too.
@@ -121,10 +123,10 @@ void firstJointStepIsThePapers(const char* material)
 // Every sample of every particle has det > 0 after a distortion and steps; the cloud's edge
 // (one-sided supports: a first moment of the weights beyond a tenth of a spacing) is among them.
 template <int D>
-void samplesAdmissible()
+void samplesAdmissible(const char* schemeText)
 {
-    INFO(D << "D");
-    TotalLagrangian<D> f(kFramed, kPlastic);
+    INFO(D << "D " << schemeText);
+    TotalLagrangian<D> f(schemeText, kPlastic);
     auto& scheme = dynamic_cast<GradF<D>&>(*f.scheme);
     auto x = test::deformCurrent<D>(f.ref.x, 29);
     REQUIRE(f.commit(x) > 0.0);
@@ -221,6 +223,7 @@ TEST_CASE("gradF elasticState, total Lagrangian: objective (a rotated, yielded c
     test::loadModelLibraries();
     test::checkObjectiveAfterMoves<2>(kFramed, kPlastic, false);
     test::checkObjectiveAfterMoves<3>(kFramed, kPlastic, false);
+    test::checkObjectiveAfterMoves<3>(kFramedJoint, kDP, false);
 }
 
 TEST_CASE("gradF elasticState, total Lagrangian: admissible samples on a distorted cloud and its "
@@ -228,6 +231,8 @@ TEST_CASE("gradF elasticState, total Lagrangian: admissible samples on a distort
           "[plasticity][gradF][frames]")
 {
     test::loadModelLibraries();
-    samplesAdmissible<2>();
-    samplesAdmissible<3>();
+    samplesAdmissible<2>(kFramed);
+    samplesAdmissible<3>(kFramed);
+    samplesAdmissible<2>(kFramedJoint);
+    samplesAdmissible<3>(kFramedJoint);
 }
