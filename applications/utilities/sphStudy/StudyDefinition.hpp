@@ -22,6 +22,8 @@
 //   {
 //       tipError { type exactSolution; functionObject tipError; value relativeLinfError; }
 //       energy   { type summary; value functions/energy/maxDrift; }
+//       radius   { type summary; value functions/shape/bar_final_max_x; plusSpacings 0.5;
+//                  reference 7.165e-3; }   // the relative error of the body's extent
 //       extent   { type referenceVariant; variant n640_ULgradF;
 //                  file postProcessing/extent/extent.dat; column ringA_maxDisplacement; }
 //       growth   { type referenceVariant; referenceLevels { seed clean; }   // each variant against
@@ -48,7 +50,8 @@
 // of each, with their defaults, are listed by `sphStudy -listTypes studyMetric`:
 //   exactSolution     functionObject; value (default relativeLinfError): a result of an
 //                     exactSolution function object in each run's summary.json
-//   summary           value: any number of summary.json by path (functions/energy/maxDrift)
+//   summary           value: any number of summary.json by path (functions/energy/maxDrift);
+//                     plusSpacings n: plus n run spacings; reference r: |value − r| / |r|
 //   referenceVariant  file, column; variant or referenceLevels; norm max|rms|mean (default
 //                     max; mean: |mean of the difference|, a plateau's offset);
 //                     scale: a table column against another variant's, relative to

@@ -3,6 +3,8 @@
 // studies).
 #include "support/CaseRunner.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -29,6 +31,8 @@ metrics
 {
     tipError    { type exactSolution; functionObject tipError; }
     energyDrift { type summary; value functions/energy/maxDrift; }
+    // The drift shifted by two spacings, relative to 0.5 (the footprint's error form).
+    shiftedDrift { type summary; value functions/energy/maxDrift; plusSpacings 2; reference 0.5; }
     // Each variant against the 40-particle run of its own scheme, in units of 1 mm.
     selfConvergence
     {
@@ -141,6 +145,15 @@ TEST_CASE("sphStudy runs every variant, measures, reports and resumes", "[study]
         CHECK(tipError > 0.0);
         CHECK(tipError < 1.0);
         CHECK(std::stod(row.at("energyDrift")) < 1e-2);
+        {
+            std::ifstream in(study / "runs" / row.at("variant") / "postProcessing/summary.json");
+            const auto summary = nlohmann::json::parse(in);
+            const double drift = summary.at("functions").at("energy").at("maxDrift");
+            const double spacing = summary.at("spacing");
+            CHECK(spacing > 0.0);
+            CHECK(std::stod(row.at("shiftedDrift")) ==
+                  Approx(std::abs(drift + 2.0 * spacing - 0.5) / 0.5).epsilon(1e-8));
+        }
         const double self = std::stod(row.at("selfConvergence"));
         if (row.at("resolution") == "n40")
         {
@@ -236,6 +249,13 @@ TEST_CASE("sphStudy reports mistakes in studyDict at their place", "[study][erro
             dryRunWith("stable { selfConvergence", "stable { selfConvergenc");
         CHECK_THAT(output, Catch::Contains("stable: 'selfConvergenc' must be one of the metrics"));
         CHECK_THAT(output, Catch::Contains("Did you mean 'selfConvergence'?"));
+    }
+    SECTION("a summary's reference of zero")
+    {
+        const std::string output = dryRunWith("reference 0.5;", "reference 0;");
+        CHECK_THAT(output, Catch::Contains("system/studyDict:"));
+        CHECK_THAT(output, Catch::Contains("must be a finite number other than 0"));
+        CHECK_THAT(output, Catch::Contains("hint: leave `reference` out"));
     }
     SECTION("an unknown metric type")
     {
