@@ -24,8 +24,8 @@
 //               does not change (G4.1); a new pair starts from its neighbour's state. Total
 //               Lagrangian (§G25-§G26): each particle's frame (F and x of the last commit,
 //               SampleFrames.hpp) moves at every commit, the samples extrapolate the step's
-//               increment, its gradient fitted in the frame (G26.1-G26.2), and their states
-//               are rebased there as at a move.
+//               increment, its gradient fitted in the frame as `fit` says (G26.1-G26.4), and
+//               their states are rebased there as at a move.
 // Sample volume (docs/theory/gradF-plastic.md §G13):
 //   own       each sample's own det F_b(a) (the paper)
 //   particle  every sample of a takes a's volume: F̄_b(a) = (J_a / det F_b(a))^(1/D) F_b(a), the
