@@ -45,6 +45,11 @@ namespace sph
 // With next, `changed` (when not null) says per state: changed[i] = 0 where the commit would
 // keep state i bit for bit (a point that does not flow), and next + i * stride is then not
 // written; 1 where it may differ (next written).
+// The per-state layouts (states and next alike): packed one after another (samples: component
+// c of state i at i * stride + c), or in rows (samplesInRows, 2D and 3D only: component c of
+// state i at c * rowLength + i, rowLength a multiple of rowBlock and each row's entries past
+// the last state the initial state's component), so that a material reads rowBlock states'
+// component with one load.
 struct HistoryOf
 {
     std::size_t first = 0;
@@ -54,6 +59,9 @@ struct HistoryOf
     std::size_t stride = 0;
     bool trialAround = false;
     std::uint8_t* changed = nullptr;
+    std::size_t componentStride = 1;
+
+    static constexpr std::size_t rowBlock = 16;
 
     static HistoryOf particles(std::size_t first) { return {first}; }
     static HistoryOf trialOf(std::size_t particle)
@@ -67,7 +75,16 @@ struct HistoryOf
     {
         return {0, states, next, dissipation, stride, false, changed};
     }
+    static HistoryOf samplesInRows(const double* states, std::size_t rowLength,
+                                   double* next = nullptr, double* dissipation = nullptr,
+                                   std::uint8_t* changed = nullptr)
+    {
+        return {0, states, next, dissipation, 1, false, changed, rowLength};
+    }
     bool perSample() const { return states != nullptr; }
+    bool inRows() const { return componentStride != 1; }
+    // Where component c of state i is (of states and of next).
+    std::size_t at(std::size_t i, std::size_t c) const { return i * stride + c * componentStride; }
     std::size_t particle(std::size_t i) const { return trialAround ? first : first + i; }
 };
 

@@ -91,8 +91,8 @@ public:
     // Its states keep the pressure of their last flowing commit (used where ψ ≠ φ, (P9.7)).
     static constexpr bool keepsFlowPressure = true;
     template <int N, int C>
-    void returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha, const Lane<N>& flowPressure,
-                     FlowLanes<N>& flow) const;
+    bool returnLanes(StrainLanes<N, C>& eps, const DeviatorLanes<N, C>& trial, const Lane<N>& alpha,
+                     const Lane<N>& flowPressure, FlowLanes<N>& flow) const;
     // The elastic law with the tension cut-off in it (P9.5), at N points: Hencky's, but the
     // volumetric stress p = min(K εv, σt): strain beyond σt/K opens voids that close again
     // without stress.
@@ -175,21 +175,34 @@ private:
 
 template <int D>
 template <int N, int C>
-void DruckerPrager<D>::returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha,
-                                   const Lane<N>& flowPressure, FlowLanes<N>& flow) const
+bool DruckerPrager<D>::returnLanes(StrainLanes<N, C>& eps, const DeviatorLanes<N, C>& trial,
+                                   const Lane<N>& alpha, const Lane<N>& flowPressure,
+                                   FlowLanes<N>& flow) const
 {
     const double K = this->law_.K;
     const double mu = this->law_.mu;
     const double opening = tensileStrength_ / K; // εt: beyond it the voids open (P9.5)
-    const DeviatorLanes<N, C> trial(eps);
     // Each loop over the lanes vectorises: both branches computed, one kept per lane.
-    Lane<N> phiTrial, evReturned, shearScale, deltaGamma;
+    Lane<N> phiTrial, rootJ2Trials, evReturned, shearScale, deltaGamma;
     for (int i = 0; i < N; ++i)
     {
         const double ev = trial.volumetric[i];
-        const double rootJ2Trial =
-            std::sqrt(2.0) * mu * trial.norm[i]; // √J2 = |s|/√2, s = 2μ dev ε
-        phiTrial[i] = rootJ2Trial + eta_ * std::min(K * ev, tensileStrength_) - xi_ * cohesion_;
+        rootJ2Trials[i] = std::sqrt(2.0) * mu * trial.norm[i]; // √J2 = |s|/√2, s = 2μ dev ε
+        phiTrial[i] = rootJ2Trials[i] + eta_ * std::min(K * ev, tensileStrength_) - xi_ * cohesion_;
+    }
+    if (!(phiTrial > 0.0).any())
+    {
+        // Every lane inside the cone (most samples, most of the time): no flow, eps kept.
+        flow.deltaGamma = Lane<N>::Zero();
+        flow.alpha = alpha;
+        flow.dissipation = Lane<N>::Zero();
+        flow.pressure = Lane<N>::Constant(noFlowPressure);
+        return false;
+    }
+    for (int i = 0; i < N; ++i)
+    {
+        const double ev = trial.volumetric[i];
+        const double rootJ2Trial = rootJ2Trials[i];
         // (P9.3) On the capped branch p = σt does not change with εv: the cone alone returns
         // s; accepted while the dilatancy keeps εv ≥ εt. Else (or from εv_tr ≤ εt) the linear
         // branch.
@@ -251,6 +264,7 @@ void DruckerPrager<D>::returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha,
     flow.alpha = nextAlphas;
     flow.dissipation = dissipation;
     flow.pressure = pressure;
+    return true;
 }
 
 } // namespace sph

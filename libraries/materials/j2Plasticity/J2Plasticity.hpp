@@ -46,8 +46,8 @@ public:
     // Associative: its dissipation's book needs no flow pressure (plasticity.md (P9.7)).
     static constexpr bool keepsFlowPressure = false;
     template <int N, int C>
-    void returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha, const Lane<N>& flowPressure,
-                     FlowLanes<N>& flow) const;
+    bool returnLanes(StrainLanes<N, C>& eps, const DeviatorLanes<N, C>& trial, const Lane<N>& alpha,
+                     const Lane<N>& flowPressure, FlowLanes<N>& flow) const;
     Flow returnUniaxial(double& eps, double alpha) const;
     double extraEnergy(const Flow& flow) const { return hardeningEnergy(flow.alpha) + flow.dissipation; }
     // This product order (V0 σy0 first) keeps the energy audit bit-identical to j2Plasticity
@@ -67,15 +67,30 @@ private:
 
 template <int D>
 template <int N, int C>
-void J2Plasticity<D>::returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha,
-                                  const Lane<N>& /*flowPressure*/, FlowLanes<N>& flow) const
+bool J2Plasticity<D>::returnLanes(StrainLanes<N, C>& eps, const DeviatorLanes<N, C>& trial,
+                                  const Lane<N>& alpha, const Lane<N>& /*flowPressure*/,
+                                  FlowLanes<N>& flow) const
 {
     const double mu = this->elastic_.mu;
-    const DeviatorLanes<N, C> trial(eps);
+    Lane<N> qTrials, yield;
     for (int i = 0; i < N; ++i)
     {
-        const double qTrial = std::sqrt(1.5) * 2.0 * mu * trial.norm[i];
-        const bool flows = qTrial > yieldStress(alpha[i]);
+        qTrials[i] = std::sqrt(1.5) * 2.0 * mu * trial.norm[i];
+        yield[i] = yieldStress(alpha[i]);
+    }
+    if (!(qTrials > yield).any())
+    {
+        // Every lane inside the yield surface (most samples, most of the time): flowOf(0, α)
+        // and eps kept, without the return's divisions.
+        flow.deltaGamma = Lane<N>::Zero();
+        flow.alpha = alpha + 0.0;
+        flow.dissipation = sigmaY0_ * Lane<N>::Zero();
+        return false;
+    }
+    for (int i = 0; i < N; ++i)
+    {
+        const double qTrial = qTrials[i];
+        const bool flows = qTrial > yield[i];
         const double hardened = (qTrial - sigmaY0_ - H_ * alpha[i]) / (3.0 * mu + H_);
         // Softening exhausted: σy = 0, s = 0.
         const double deltaGamma =
@@ -98,6 +113,7 @@ void J2Plasticity<D>::returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha,
         flow.alpha[i] = f.alpha;
         flow.dissipation[i] = f.dissipation;
     }
+    return true;
 }
 
 } // namespace sph

@@ -75,7 +75,9 @@ inline void assemble(const Lane<N> (&vectors)[D][D], int i, const Eigen::Vector3
 
 // The inputs of N points: F and the packed committed states (Cp⁻¹ with all D² components, as
 // a packed state holds them, zz in 2D, the flow pressure and α). Unused lanes hold the virgin
-// state at F = I, where every branch is finite.
+// state at F = I, where every branch is finite. The states packed one after another (stride
+// apart), or in rows (componentStride apart, HistoryOf::samplesInRows: N entries of each row
+// readable, those past `count` the initial state's), read a row at a time.
 template <int D, int N, class State>
 struct GatheredLanes
 {
@@ -85,8 +87,18 @@ struct GatheredLanes
     Lane<N> f[D][D];
     Lane<N> committed[State::packedSize];
 
-    GatheredLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count)
+    GatheredLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count,
+                  std::size_t componentStride = 1)
     {
+        if (componentStride != 1)
+        {
+            for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
+            {
+                committed[c] = Eigen::Map<const Lane<N>>(states + c * componentStride);
+            }
+            gatherF(F, count);
+            return;
+        }
         for (int k = 0; k < D; ++k)
         {
             for (int l = 0; l < D; ++l)
@@ -112,6 +124,27 @@ struct GatheredLanes
             for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
             {
                 committed[c][i] = states[i * stride + c];
+            }
+        }
+    }
+    // F of the first `count` lanes, I in the others.
+    void gatherF(const Mat<D>* F, std::size_t count)
+    {
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                f[k][l] = Lane<N>::Constant(k == l ? 1.0 : 0.0);
+            }
+        }
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            for (int k = 0; k < D; ++k)
+            {
+                for (int l = 0; l < D; ++l)
+                {
+                    f[k][l][i] = F[i](k, l);
+                }
             }
         }
     }

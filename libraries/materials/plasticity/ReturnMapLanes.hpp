@@ -23,6 +23,8 @@
 #include "materials/plasticity/GatheredLanes.hpp"
 #include "materials/plasticity/JacobiLanes.hpp"
 
+#include <optional>
+
 namespace sph
 {
 
@@ -31,10 +33,11 @@ template <int N>
 void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double* states,
                                                   std::size_t stride, std::size_t count, bool flow,
                                                   bool wantNext, LanesResult<N>& out,
-                                                  bool wantWaveModulus) const
+                                                  bool wantWaveModulus,
+                                                  std::size_t componentStride) const
 {
     static_assert(D == 2 || D == 3, "the bar (1D) has its own return");
-    const GatheredLanes<D, N, State> in(F, states, stride, count);
+    const GatheredLanes<D, N, State> in(F, states, stride, count, componentStride);
     Lane<N> be[D][D], finv[D][D];
     in.trialBe(be);
     in.inverse(finv);
@@ -74,10 +77,18 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
     StrainLanes<N, 6> strain;
     Law::template strain<N>(in, be, strain, inRange);
 
-    returnOrTrial<N, 6>(strain, in.alpha(), in.flowPressure(), flow, out.flow);
+    const DeviatorLanes<N, 6> trial(strain);
+    const bool changed = returnOrTrial<N, 6>(strain, trial, in.alpha(), in.flowPressure(), flow,
+                                             out.flow);
 
-    // τ, P = τ F⁻ᵀ, W and the wave modulus M + max |τᵢ| (P2.5).
-    const DeviatorLanes<N, 6> returned(strain);
+    // τ, P = τ F⁻ᵀ, W and the wave modulus M + max |τᵢ| (P2.5), from the returned strain's
+    // parts: the trial's where no lane's strain changed (the same numbers from the same strain).
+    std::optional<DeviatorLanes<N, 6>> flowed;
+    if (changed)
+    {
+        flowed.emplace(strain);
+    }
+    const DeviatorLanes<N, 6>& returned = changed ? *flowed : trial;
     SymmetricLanes<N> tau;
     kirchhoffLanes<N, 6>(returned, tau);
     constexpr int at[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
@@ -116,11 +127,18 @@ void ReturnMapPlasticity<D, Model>::returnInAxes(const GatheredLanes<D, N, State
     PrincipalLanes<N, D> principal;
     principalOf<N>(be, in.trialZZ(), principal);
 
-    returnOrTrial<N, 3>(principal.strain, in.alpha(), in.flowPressure(), flow, out.flow);
+    const DeviatorLanes<N> trial(principal.strain);
+    const bool changed = returnOrTrial<N, 3>(principal.strain, trial, in.alpha(),
+                                             in.flowPressure(), flow, out.flow);
 
     // τ, P = S F⁻ᵀ with S = Σ τₖ nₖ⊗nₖ, W and the wave modulus M + max |τ| (P2.5).
     const auto& v = principal.vectors;
-    const DeviatorLanes<N> returned(principal.strain);
+    std::optional<DeviatorLanes<N>> flowed;
+    if (changed)
+    {
+        flowed.emplace(principal.strain);
+    }
+    const DeviatorLanes<N>& returned = changed ? *flowed : trial;
     Lane<N> tau[3], S[D][D];
     kirchhoffLanes<N>(returned, tau);
     for (int k = 0; k < D; ++k)
@@ -175,25 +193,24 @@ void ReturnMapPlasticity<D, Model>::returnInAxes(const GatheredLanes<D, N, State
     }
 }
 
-// The model's return of the trial strains (returned in place), or with flow = false the trial
-// itself: no flow, α kept.
+// The model's return of the trial strains (returned in place; `trial` their parts), or with
+// flow = false the trial itself: no flow, α kept. Whether any lane's strain changed.
 template <int D, class Model>
 template <int N, int C>
-void ReturnMapPlasticity<D, Model>::returnOrTrial(StrainLanes<N, C>& strain, const Lane<N>& alpha,
-                                                  const Lane<N>& flowPressure, bool flow,
-                                                  FlowLanes<N>& out) const
+bool ReturnMapPlasticity<D, Model>::returnOrTrial(StrainLanes<N, C>& strain,
+                                                  const DeviatorLanes<N, C>& trial,
+                                                  const Lane<N>& alpha, const Lane<N>& flowPressure,
+                                                  bool flow, FlowLanes<N>& out) const
 {
     out.pressure = Lane<N>::Constant(noFlowPressure);
     if (flow)
     {
-        model().template returnLanes<N, C>(strain, alpha, flowPressure, out);
+        return model().template returnLanes<N, C>(strain, trial, alpha, flowPressure, out);
     }
-    else
-    {
-        out.deltaGamma = Lane<N>::Zero();
-        out.alpha = alpha;
-        out.dissipation = Lane<N>::Zero();
-    }
+    out.deltaGamma = Lane<N>::Zero();
+    out.alpha = alpha;
+    out.dissipation = Lane<N>::Zero();
+    return false;
 }
 
 // W − Ψ(εe) where a point has flowed (now or before); without plastic flow the energy stays
@@ -202,6 +219,10 @@ template <int D, class Model>
 template <int N>
 void ReturnMapPlasticity<D, Model>::addExtraEnergy(const Lane<N>& alpha, LanesResult<N>& out) const
 {
+    if (!((alpha > 0.0) || (out.flow.deltaGamma > 0.0)).any())
+    {
+        return; // the common case: a virgin point that stays elastic (one vector comparison)
+    }
     for (int i = 0; i < N; ++i)
     {
         if (alpha[i] > 0.0 || out.flow.deltaGamma[i] > 0.0)

@@ -7,6 +7,7 @@
 #include "materials/plasticity/ReturnMapLanes.hpp"
 
 #include <bit>
+#include <stdexcept>
 #include <cstdint>
 
 namespace sph
@@ -47,6 +48,10 @@ void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double*
             }
         }
         // The bar, and the trial (elastic predictor) around one particle: point by point.
+        if (history.inRows())
+        {
+            throw std::logic_error("ReturnMapPlasticity: states in rows in 1D");
+        }
         const bool perSample = history.perSample();
         const State s = perSample ? State::unpack(history.states + i * history.stride)
                                   : state(history.particle(i));
@@ -123,7 +128,8 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
         const bool wantNext = history.next != nullptr;
         LanesResult<lanes> out;
         // A sample's wave modulus is never read (the time step takes the particles').
-        returnInLanes<lanes>(F, history.states, history.stride, count, true, wantNext, out, false);
+        returnInLanes<lanes>(F, history.states, history.stride, count, true, wantNext, out, false,
+                             history.componentStride);
         for (std::size_t i = 0; i < count; ++i)
         {
             const int lane = static_cast<int>(i);
@@ -137,18 +143,17 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
                 // A lane that does not flow keeps the committed state but for the flow pressure
                 // the return gave it (keepCommitted): the committed state, bit for bit, where
                 // that is the committed pressure. Only the others are written and compared.
-                const double* committed = history.states + i * history.stride;
-                const bool changed =
-                    out.flow.deltaGamma[i] > 0.0 ||
-                    std::bit_cast<std::uint64_t>(out.flow.pressure[i]) !=
-                        std::bit_cast<std::uint64_t>(committed[State::flowPressureAt]);
+                const double committedPressure = history.states[history.at(i, State::flowPressureAt)];
+                const bool changed = out.flow.deltaGamma[i] > 0.0 ||
+                                     std::bit_cast<std::uint64_t>(out.flow.pressure[i]) !=
+                                         std::bit_cast<std::uint64_t>(committedPressure);
                 if (history.changed)
                 {
                     history.changed[i] = changed ? 1 : 0;
                 }
                 if (changed || !history.changed)
                 {
-                    out.packNext(lane, history.next + i * history.stride);
+                    out.packNext(lane, history.next + history.at(i, 0), history.componentStride);
                 }
                 history.dissipation[i] = out.flow.dissipation[i];
             }

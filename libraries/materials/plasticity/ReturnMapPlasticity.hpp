@@ -7,11 +7,14 @@
 // what is its own, as non-virtual members of Model (CRTP: the return is inlined in the loops
 // over sixteen points side by side, ReturnMapLanes.hpp, that every return runs through):
 //
-//   template <int N, int C> void returnLanes(StrainLanes<N, C>& eps, const Lane<N>& alpha,
-//       const Lane<N>& flowPressure, FlowLanes<N>& flow) const;  2D/3D: the return at N points
-//       side by side (ReturnLanes.hpp), on principal log strains (C = 3) or on the strain
-//       tensor (C = 6, §P12–§P13: the law without principal axes); eps: trial in, returned out;
-//       alpha: the committed α; flowPressure: the committed state's
+//   template <int N, int C> bool returnLanes(StrainLanes<N, C>& eps,
+//       const DeviatorLanes<N, C>& trial, const Lane<N>& alpha, const Lane<N>& flowPressure,
+//       FlowLanes<N>& flow) const;  2D/3D: the return at N points side by side
+//       (ReturnLanes.hpp), on principal log strains (C = 3) or on the strain tensor (C = 6,
+//       §P12–§P13: the law without principal axes); eps: trial in, returned out; trial: its
+//       volumetric and deviatoric parts; alpha: the committed α; flowPressure: the committed
+//       state's; returns whether any lane's eps changed (false: every lane inside the yield
+//       surface, eps untouched — the common case, which should cost one comparison)
 //   static constexpr bool keepsFlowPressure: whether the model sets flow.pressure (its
 //       states then keep it, one number more in each compact state)
 //   Flow returnUniaxial(double& eps, double alpha) const;            1D bar (only if the
@@ -210,14 +213,15 @@ private:
     double waveSpeedOf(double waveModulus, const Mat<D>& stretched) const;
 
     // The return map at N points side by side (ReturnMapLanes.hpp): returnMap's steps over
-    // `count` ≤ N points with their packed committed states (stride apart); the lanes beyond
+    // `count` ≤ N points with their committed states (stride apart); the lanes beyond
     // `count` are computed on the virgin state at F = I and ignored.
     template <int N>
     using LanesResult = sph::LanesResult<D, N>;
     template <int N>
+    // (componentStride: 1, or the states in rows, HistoryOf::samplesInRows)
     void returnInLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count,
-                       bool flow, bool wantNext, LanesResult<N>& out,
-                       bool wantWaveModulus = true) const;
+                       bool flow, bool wantNext, LanesResult<N>& out, bool wantWaveModulus = true,
+                       std::size_t componentStride = 1) const;
     // Its two forms (§P12–§P13 and §P4) from the gathered points, their trial be and F⁻¹ (the
     // wave modulus only where asked: a gradF sample's is never read).
     template <int N>
@@ -229,8 +233,9 @@ private:
                       const Lane<N> (&finv)[D][D], bool flow, bool wantNext,
                       bool wantWaveModulus, LanesResult<N>& out) const;
     template <int N, int C>
-    void returnOrTrial(StrainLanes<N, C>& strain, const Lane<N>& alpha, const Lane<N>& flowPressure,
-                       bool flow, FlowLanes<N>& out) const;
+    bool returnOrTrial(StrainLanes<N, C>& strain, const DeviatorLanes<N, C>& trial,
+                       const Lane<N>& alpha, const Lane<N>& flowPressure, bool flow,
+                       FlowLanes<N>& out) const;
     template <int N> void addExtraEnergy(const Lane<N>& alpha, LanesResult<N>& out) const;
     // The principal form of N matrices be (in 2D with their zz components).
     template <int N>

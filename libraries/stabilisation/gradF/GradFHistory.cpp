@@ -15,12 +15,13 @@ void GradF<D>::evaluateSamples(std::size_t a, const Material<D>& material, const
 {
     if (!(linearised_ && material.hasHistory()))
     {
-        material.evaluate(scratch.F.data(), scratch.P.data(), psi, count,
-                          historyAround(a, material, list, scratch, pending));
+        const HistoryOf history = historyAround(a, material, list, scratch, pending);
+        material.evaluate(scratch.F.data(), scratch.P.data(), psi, count, history);
         if (pending && material.hasHistory())
         {
             samples_.keepPending(list.begin(a), count, scratch.states.data(),
-                                 scratch.nextStates.data(), scratch.changed.data());
+                                 scratch.nextStates.data(), scratch.changed.data(),
+                                 history.inRows() ? history.componentStride : 0);
         }
         return;
     }
@@ -64,14 +65,32 @@ HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
                                "called");
     }
     const std::size_t stride = samples_.stride();
-    scratch.states.resize(list.count(a) * stride);
-    samples_.read(list.begin(a), list.count(a), scratch.states.data());
+    const std::size_t count = list.count(a);
+    if constexpr (D >= 2)
+    {
+        // In rows (the material reads each component of 16 samples at once), padded to whole
+        // blocks of them with the initial state.
+        const std::size_t rowLength =
+            (count + HistoryOf::rowBlock - 1) / HistoryOf::rowBlock * HistoryOf::rowBlock;
+        scratch.states.resize(rowLength * stride);
+        samples_.readRows(list.begin(a), count, scratch.states.data(), rowLength);
+        if (!pending)
+        {
+            return HistoryOf::samplesInRows(scratch.states.data(), rowLength);
+        }
+        scratch.nextStates.resize(scratch.states.size());
+        scratch.changed.resize(count);
+        return HistoryOf::samplesInRows(scratch.states.data(), rowLength, scratch.nextStates.data(),
+                                        scratch.dissipation.data(), scratch.changed.data());
+    }
+    scratch.states.resize(count * stride);
+    samples_.read(list.begin(a), count, scratch.states.data());
     if (!pending)
     {
         return HistoryOf::samples(scratch.states.data(), stride);
     }
     scratch.nextStates.resize(scratch.states.size());
-    scratch.changed.resize(list.count(a));
+    scratch.changed.resize(count);
     return HistoryOf::samples(scratch.states.data(), stride, scratch.nextStates.data(),
                               scratch.dissipation.data(), scratch.changed.data());
 }

@@ -122,26 +122,45 @@ public:
             readSlot(first + j, out + j * stride_);
         }
     }
-    // What an evaluation found a commit would make of those states (`next`, laid out as
-    // read() gives them in `committed`): the states that differ are kept for the commit. The
-    // last evaluation's are the ones committed; clearPending() before it starts. changed (if
-    // not null): HistoryOf's, 0 where next is the committed state and was not written.
-    void keepPending(std::size_t first, std::size_t count, const double* committed,
-                     const double* next, const std::uint8_t* changed = nullptr)
+    // The same in rows (HistoryOf::samplesInRows): component c of slot first + j at
+    // out[c * rowLength + j], rowLength ≥ count; the entries past count hold the initial state.
+    // (Most samples have no record: their rows are the initial state's, written a row at a time.)
+    void readRows(std::size_t first, std::size_t count, double* out, std::size_t rowLength) const
     {
-        PendingStates::List& mine = pending_.mine();
+        for (std::size_t c = 0; c < stride_; ++c)
+        {
+            std::fill(out + c * rowLength, out + (c + 1) * rowLength, initial_[c]);
+        }
+        double state[maxStride];
         for (std::size_t j = 0; j < count; ++j)
         {
-            if (changed && !changed[j])
+            if (slot_[first + j] != StatePool::none)
             {
-                continue;
+                codec_->expandHistory(pool_.at(slot_[first + j]), state);
+                for (std::size_t c = 0; c < stride_; ++c)
+                {
+                    out[c * rowLength + j] = state[c];
+                }
             }
-            const double* state = next + j * stride_;
-            if (!sameBits(state, committed + j * stride_))
+        }
+    }
+    // What an evaluation found a commit would make of those states (`next`, laid out as
+    // read() gives them in `committed`, or as readRows() does with rowLength > 0): the states
+    // that differ are kept for the commit. The last evaluation's are the ones committed;
+    // clearPending() before it starts. changed (if not null): HistoryOf's, 0 where next is the
+    // committed state and was not written.
+    void keepPending(std::size_t first, std::size_t count, const double* committed,
+                     const double* next, const std::uint8_t* changed = nullptr,
+                     std::size_t rowLength = 0)
+    {
+        PendingStates::List& mine = pending_.mine();
+        const std::size_t step = rowLength > 0 ? 1 : stride_;
+        const std::size_t component = rowLength > 0 ? rowLength : 1;
+        for (std::size_t j = 0; j < count; ++j)
+        {
+            if (!changed || changed[j])
             {
-                resizePairArray(mine.slots, mine.slots.size() + 1);
-                mine.slots.back() = static_cast<std::uint32_t>(first + j); // as NeighbourList's
-                compact(state, mine.states.at(mine.states.allocate()));
+                keepIfChanged(first + j, next + j * step, committed + j * step, component, mine);
             }
         }
     }
@@ -353,6 +372,25 @@ private:
         else
         {
             codec_->expandHistory(pool_.at(slot_[k]), out);
+        }
+    }
+    // keepPending() of one sample (components `component` apart). (Out of the loop over the
+    // samples, which only looks at their flags: inlined, its addresses filled the registers.)
+    [[gnu::noinline]] void keepIfChanged(std::size_t slot, const double* next,
+                                         const double* committed, std::size_t component,
+                                         PendingStates::List& mine)
+    {
+        double state[maxStride], old[maxStride];
+        for (std::size_t c = 0; c < stride_; ++c)
+        {
+            state[c] = next[c * component];
+            old[c] = committed[c * component];
+        }
+        if (!sameBits(state, old))
+        {
+            resizePairArray(mine.slots, mine.slots.size() + 1);
+            mine.slots.back() = static_cast<std::uint32_t>(slot); // as NeighbourList's
+            compact(state, mine.states.at(mine.states.allocate()));
         }
     }
     // The compact form of a packed state, which must unpack to it bit for bit.
