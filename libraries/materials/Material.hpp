@@ -45,11 +45,11 @@ namespace sph
 // With next, `changed` (when not null) says per state: changed[i] = 0 where the commit would
 // keep state i bit for bit (a point that does not flow), and next + i * stride is then not
 // written; 1 where it may differ (next written).
-// The per-state layouts (states and next alike): packed one after another (samples: component
-// c of state i at i * stride + c), or in rows (samplesInRows, 2D and 3D only: component c of
-// state i at c * rowLength + i, rowLength a multiple of rowBlock and each row's entries past
-// the last state the initial state's component), so that a material reads rowBlock states'
-// component with one load.
+// The committed states' layouts: packed one after another (samples: component c of state i at
+// i * stride + c), or in rows (samplesInRows, 2D and 3D only: component c of state i at
+// c * rowLength + i, rowLength a multiple of rowBlock and each row's entries past the last
+// state the initial state's component), so that a material reads rowBlock states' component
+// with one load. The next states are packed either way, nextStride apart.
 struct HistoryOf
 {
     std::size_t first = 0;
@@ -60,6 +60,7 @@ struct HistoryOf
     bool trialAround = false;
     std::uint8_t* changed = nullptr;
     std::size_t componentStride = 1;
+    std::size_t nextStride = 0;
 
     static constexpr std::size_t rowBlock = 16;
 
@@ -73,17 +74,18 @@ struct HistoryOf
     static HistoryOf samples(const double* states, std::size_t stride, double* next = nullptr,
                              double* dissipation = nullptr, std::uint8_t* changed = nullptr)
     {
-        return {0, states, next, dissipation, stride, false, changed};
+        return {0, states, next, dissipation, stride, false, changed, 1, stride};
     }
+    // (packedSize: the numbers of a packed state, the next states' stride)
     static HistoryOf samplesInRows(const double* states, std::size_t rowLength,
-                                   double* next = nullptr, double* dissipation = nullptr,
-                                   std::uint8_t* changed = nullptr)
+                                   std::size_t packedSize, double* next = nullptr,
+                                   double* dissipation = nullptr, std::uint8_t* changed = nullptr)
     {
-        return {0, states, next, dissipation, 1, false, changed, rowLength};
+        return {0, states, next, dissipation, 1, false, changed, rowLength, packedSize};
     }
     bool perSample() const { return states != nullptr; }
     bool inRows() const { return componentStride != 1; }
-    // Where component c of state i is (of states and of next).
+    // Where component c of committed state i is.
     std::size_t at(std::size_t i, std::size_t c) const { return i * stride + c * componentStride; }
     std::size_t particle(std::size_t i) const { return trialAround ? first : first + i; }
 };

@@ -190,7 +190,7 @@ bool DruckerPrager<D>::returnLanes(StrainLanes<N, C>& eps, const DeviatorLanes<N
         rootJ2Trials[i] = std::sqrt(2.0) * mu * trial.norm[i]; // √J2 = |s|/√2, s = 2μ dev ε
         phiTrial[i] = rootJ2Trials[i] + eta_ * std::min(K * ev, tensileStrength_) - xi_ * cohesion_;
     }
-    if (!(phiTrial > 0.0).any())
+    if (countLanes<N>([&](int i) { return phiTrial[i] > 0.0; }) == 0)
     {
         // Every lane inside the cone (most samples, most of the time): no flow, eps kept.
         flow.deltaGamma = Lane<N>::Zero();

@@ -78,7 +78,7 @@ bool J2Plasticity<D>::returnLanes(StrainLanes<N, C>& eps, const DeviatorLanes<N,
         qTrials[i] = std::sqrt(1.5) * 2.0 * mu * trial.norm[i];
         yield[i] = yieldStress(alpha[i]);
     }
-    if (!(qTrials > yield).any())
+    if (countLanes<N>([&](int i) { return qTrials[i] > yield[i]; }) == 0)
     {
         // Every lane inside the yield surface (most samples, most of the time): flowOf(0, α)
         // and eps kept, without the return's divisions.

@@ -90,7 +90,7 @@ void principalForm(Lane<N> (&matrix)[6], Lane<N> (&vectors)[3][3])
             const double diagonal = a[0][i] * a[0][i] + a[1][i] * a[1][i] + a[2][i] * a[2][i];
             done[i] = off > 1e-34 * diagonal ? 0.0 : 1.0;
         }
-        if ((done != 0.0).all())
+        if (countLanes<N>([&](int i) { return done[i] == 0.0; }) == 0)
         {
             break;
         }

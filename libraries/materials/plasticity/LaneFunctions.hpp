@@ -37,7 +37,7 @@ template <int N>
 template <int N>
 inline void logarithmBeyondSeries(const Lane<N>& y, const Lane<N>& t2, Lane<N>& result)
 {
-    if ((t2 <= seriesRange).all())
+    if (countLanes<N>([&](int i) { return !(t2[i] <= seriesRange); }) == 0)
     {
         return; // the common case: one vector comparison
     }
@@ -76,7 +76,7 @@ inline Lane<N> exponential(const Lane<N>& y)
     {
         sum = 1.0 + y * sum / k;
     }
-    if (!(y.abs() <= expRange).all())
+    if (countLanes<N>([&](int i) { return !(std::abs(y[i]) <= expRange); }) > 0)
     {
         for (int i = 0; i < N; ++i)
         {

@@ -34,12 +34,11 @@ template <int D, int N> struct LanesResult
     {
         return {flow.deltaGamma[i], flow.alpha[i], flow.dissipation[i], flow.pressure[i]};
     }
-    // (component c at out[c * componentStride]: a packed state, or a column of rows)
-    void packNext(int i, double* out, std::size_t componentStride = 1) const
+    void packNext(int i, double* out) const
     {
         for (std::size_t c = 0; c < PlasticState<D>::packedSize; ++c)
         {
-            out[c * componentStride] = next[c][i];
+            out[c] = next[c][i];
         }
     }
     // Lane i of `from` (every field) into lane i.

@@ -38,18 +38,33 @@ void logarithmicStrain(const Lane<N> (&be)[2][2], const Lane<N>& beZZ, StrainLan
     const Lane<N> t2ZZ = tZZ * tZZ;
     Lane<N> shape = Lane<N>::Constant(1.0 / (2 * seriesTerms - 1));
     Lane<N> seriesDet = shape, seriesZZ = shape;
-    for (int k = seriesTerms - 2; k >= 0; --k)
+    // be_zz = 1 at every lane (no plastic flow yet, the common case): ln be_zz = 2·0·A = 0
+    // without its chain.
+    const bool unitZZ = countLanes<N>([&](int i) { return beZZ[i] != 1.0; }) == 0;
+    if (unitZZ)
     {
-        const double coefficient = 1.0 / (2 * k + 1);
-        shape = shape * x2 + coefficient;
-        seriesDet = seriesDet * t2Det + coefficient;
-        seriesZZ = seriesZZ * t2ZZ + coefficient;
+        for (int k = seriesTerms - 2; k >= 0; --k)
+        {
+            const double coefficient = 1.0 / (2 * k + 1);
+            shape = shape * x2 + coefficient;
+            seriesDet = seriesDet * t2Det + coefficient;
+        }
+    }
+    else
+    {
+        for (int k = seriesTerms - 2; k >= 0; --k)
+        {
+            const double coefficient = 1.0 / (2 * k + 1);
+            shape = shape * x2 + coefficient;
+            seriesDet = seriesDet * t2Det + coefficient;
+            seriesZZ = seriesZZ * t2ZZ + coefficient;
+        }
     }
     Lane<N> lnDet = 2.0 * tDet * seriesDet;
-    Lane<N> lnZZ = 2.0 * tZZ * seriesZZ;
+    Lane<N> lnZZ = unitZZ ? Lane<N>::Zero() : Lane<N>(2.0 * tZZ * seriesZZ);
     laneFunctions::logarithmBeyondSeries<N>(det, t2Det, lnDet);
     laneFunctions::logarithmBeyondSeries<N>(beZZ, t2ZZ, lnZZ);
-    if (!(x2 <= seriesRange).all())
+    if (countLanes<N>([&](int i) { return !(x2[i] <= seriesRange); }) > 0)
     {
         for (int i = 0; i < N; ++i)
         {

@@ -49,6 +49,19 @@ struct StrainLanes
     }
 };
 
+// How many of N lanes satisfy pred(i). (A sum, not Eigen's any() or all(): those compile to a
+// compare and a branch per lane; this loop is one vector compare per register.)
+template <int N, class Predicate>
+[[gnu::always_inline]] inline int countLanes(Predicate pred)
+{
+    int count = 0;
+    for (int i = 0; i < N; ++i)
+    {
+        count += pred(i) ? 1 : 0;
+    }
+    return count;
+}
+
 // Whether component k of a strain's C is on the diagonal (a principal value is).
 constexpr bool onDiagonal(int k) { return k < 3; }
 
@@ -82,7 +95,9 @@ struct DeviatorLanes
     Lane<N> dev[C];
     Lane<N> norm;
 
-    [[gnu::always_inline]] explicit DeviatorLanes(const StrainLanes<N, C>& s)
+    DeviatorLanes() = default; // (uninitialised: split() fills it)
+    [[gnu::always_inline]] explicit DeviatorLanes(const StrainLanes<N, C>& s) { split(s); }
+    [[gnu::always_inline]] void split(const StrainLanes<N, C>& s)
     {
         for (int i = 0; i < N; ++i)
         {

@@ -23,7 +23,6 @@
 #include "materials/plasticity/GatheredLanes.hpp"
 #include "materials/plasticity/JacobiLanes.hpp"
 
-#include <optional>
 
 namespace sph
 {
@@ -45,7 +44,7 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     if (form_ == LawForm::series)
     {
         returnWithoutAxes<N>(in, be, finv, flow, wantNext, wantWaveModulus, out, withoutAxes);
-        if ((withoutAxes != 0.0).all())
+        if (countLanes<N>([&](int i) { return withoutAxes[i] == 0.0; }) == 0)
         {
             return;
         }
@@ -83,12 +82,12 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
 
     // τ, P = τ F⁻ᵀ, W and the wave modulus M + max |τᵢ| (P2.5), from the returned strain's
     // parts: the trial's where no lane's strain changed (the same numbers from the same strain).
-    std::optional<DeviatorLanes<N, 6>> flowed;
+    DeviatorLanes<N, 6> flowed; // (no std::optional: it would clear the lanes first)
     if (changed)
     {
-        flowed.emplace(strain);
+        flowed.split(strain);
     }
-    const DeviatorLanes<N, 6>& returned = changed ? *flowed : trial;
+    const DeviatorLanes<N, 6>& returned = changed ? flowed : trial;
     SymmetricLanes<N> tau;
     kirchhoffLanes<N, 6>(returned, tau);
     constexpr int at[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
@@ -107,7 +106,7 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
         return;
     }
     in.keepCommitted(out);
-    if (!(out.flow.deltaGamma > 0.0).any())
+    if (countLanes<N>([&](int i) { return out.flow.deltaGamma[i] > 0.0; }) == 0)
     {
         return; // nothing flows: every state stays (each lane's result is its own either way)
     }
@@ -133,12 +132,12 @@ void ReturnMapPlasticity<D, Model>::returnInAxes(const GatheredLanes<D, N, State
 
     // τ, P = S F⁻ᵀ with S = Σ τₖ nₖ⊗nₖ, W and the wave modulus M + max |τ| (P2.5).
     const auto& v = principal.vectors;
-    std::optional<DeviatorLanes<N>> flowed;
+    DeviatorLanes<N> flowed; // (no std::optional: it would clear the lanes first)
     if (changed)
     {
-        flowed.emplace(principal.strain);
+        flowed.split(principal.strain);
     }
-    const DeviatorLanes<N>& returned = changed ? *flowed : trial;
+    const DeviatorLanes<N>& returned = changed ? flowed : trial;
     Lane<N> tau[3], S[D][D];
     kirchhoffLanes<N>(returned, tau);
     for (int k = 0; k < D; ++k)
@@ -219,7 +218,7 @@ template <int D, class Model>
 template <int N>
 void ReturnMapPlasticity<D, Model>::addExtraEnergy(const Lane<N>& alpha, LanesResult<N>& out) const
 {
-    if (!((alpha > 0.0) || (out.flow.deltaGamma > 0.0)).any())
+    if (countLanes<N>([&](int i) { return alpha[i] > 0.0 || out.flow.deltaGamma[i] > 0.0; }) == 0)
     {
         return; // the common case: a virgin point that stays elastic (one vector comparison)
     }

@@ -28,7 +28,7 @@ void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double*
                 chunk.states += i * history.stride;
                 if (history.next)
                 {
-                    chunk.next += i * history.stride;
+                    chunk.next += i * history.nextStride;
                     chunk.dissipation += i;
                     if (history.changed)
                     {
@@ -70,7 +70,7 @@ void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double*
         if (perSample && wantNext)
         {
             const double* committed = history.states + i * history.stride;
-            double* next = history.next + i * history.stride;
+            double* next = history.next + i * history.nextStride;
             if (r.flow.deltaGamma > 0.0)
             {
                 r.next.pack(next);
@@ -153,7 +153,7 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
                 }
                 if (changed || !history.changed)
                 {
-                    out.packNext(lane, history.next + history.at(i, 0), history.componentStride);
+                    out.packNext(lane, history.next + i * history.nextStride);
                 }
                 history.dissipation[i] = out.flow.dissipation[i];
             }

@@ -15,13 +15,12 @@ void GradF<D>::evaluateSamples(std::size_t a, const Material<D>& material, const
 {
     if (!(linearised_ && material.hasHistory()))
     {
-        const HistoryOf history = historyAround(a, material, list, scratch, pending);
-        material.evaluate(scratch.F.data(), scratch.P.data(), psi, count, history);
+        material.evaluate(scratch.F.data(), scratch.P.data(), psi, count,
+                          historyAround(a, material, list, scratch, pending));
         if (pending && material.hasHistory())
         {
-            samples_.keepPending(list.begin(a), count, scratch.states.data(),
-                                 scratch.nextStates.data(), scratch.changed.data(),
-                                 history.inRows() ? history.componentStride : 0);
+            samples_.keepPending(list.begin(a), count, scratch.nextStates.data(),
+                                 scratch.changed.data());
         }
         return;
     }
@@ -69,19 +68,28 @@ HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
     if constexpr (D >= 2)
     {
         // In rows (the material reads each component of 16 samples at once), padded to whole
-        // blocks of them with the initial state.
+        // blocks of them with the initial state. (The buffers only grow: resizing them down
+        // and up again, particle by particle, cleared the new part each time.)
         const std::size_t rowLength =
             (count + HistoryOf::rowBlock - 1) / HistoryOf::rowBlock * HistoryOf::rowBlock;
-        scratch.states.resize(rowLength * stride);
+        const auto atLeast = [](auto& buffer, std::size_t size)
+        {
+            if (buffer.size() < size)
+            {
+                buffer.resize(size);
+            }
+        };
+        atLeast(scratch.states, rowLength * stride);
         samples_.readRows(list.begin(a), count, scratch.states.data(), rowLength);
         if (!pending)
         {
-            return HistoryOf::samplesInRows(scratch.states.data(), rowLength);
+            return HistoryOf::samplesInRows(scratch.states.data(), rowLength, stride);
         }
-        scratch.nextStates.resize(scratch.states.size());
-        scratch.changed.resize(count);
-        return HistoryOf::samplesInRows(scratch.states.data(), rowLength, scratch.nextStates.data(),
-                                        scratch.dissipation.data(), scratch.changed.data());
+        atLeast(scratch.nextStates, count * stride);
+        atLeast(scratch.changed, count);
+        return HistoryOf::samplesInRows(scratch.states.data(), rowLength, stride,
+                                        scratch.nextStates.data(), scratch.dissipation.data(),
+                                        scratch.changed.data());
     }
     scratch.states.resize(count * stride);
     samples_.read(list.begin(a), count, scratch.states.data());

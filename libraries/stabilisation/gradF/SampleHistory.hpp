@@ -16,7 +16,9 @@
 // slot by the neighbour's global index; a pair that is new starts from its owner's committed
 // particle state (= its own sample a–a).
 //
-// follow() and its helpers are defined in SampleHistoryLayout.hpp, included at the end.
+// follow() and its helpers are defined in SampleHistoryLayout.hpp, what an evaluation reads and
+// hands back (readRows(), keepPending(), commit()) in SampleHistoryEvaluation.hpp, both
+// included at the end.
 //
 // To the field registry the states are a ragged particle field (particles/RaggedArray.hpp):
 // particle a's entries are its samples, each [neighbour's global index, packed state]. So they
@@ -51,8 +53,7 @@
 namespace sph
 {
 
-template <int D>
-class SampleHistory final : public RaggedArray
+template <int D> class SampleHistory final : public RaggedArray
 {
 public:
     // Active when some material has history. The materials with history share one packed
@@ -88,6 +89,9 @@ public:
             pool_.reset(material->compactHistoryComponents());
             initial_.resize(stride_);
             material->packInitialHistory(initial_.data());
+            initialCompact_.resize(pool_.width());
+            compact(initial_.data(), initialCompact_.data());
+            learnExpansion();
         }
         if (stride_ > 0)
         {
@@ -125,45 +129,14 @@ public:
     // The same in rows (HistoryOf::samplesInRows): component c of slot first + j at
     // out[c * rowLength + j], rowLength ≥ count; the entries past count hold the initial state.
     // (Most samples have no record: their rows are the initial state's, written a row at a time.)
-    void readRows(std::size_t first, std::size_t count, double* out, std::size_t rowLength) const
-    {
-        for (std::size_t c = 0; c < stride_; ++c)
-        {
-            std::fill(out + c * rowLength, out + (c + 1) * rowLength, initial_[c]);
-        }
-        double state[maxStride];
-        for (std::size_t j = 0; j < count; ++j)
-        {
-            if (slot_[first + j] != StatePool::none)
-            {
-                codec_->expandHistory(pool_.at(slot_[first + j]), state);
-                for (std::size_t c = 0; c < stride_; ++c)
-                {
-                    out[c * rowLength + j] = state[c];
-                }
-            }
-        }
-    }
-    // What an evaluation found a commit would make of those states (`next`, laid out as
-    // read() gives them in `committed`, or as readRows() does with rowLength > 0): the states
-    // that differ are kept for the commit. The last evaluation's are the ones committed;
-    // clearPending() before it starts. changed (if not null): HistoryOf's, 0 where next is the
-    // committed state and was not written.
-    void keepPending(std::size_t first, std::size_t count, const double* committed,
-                     const double* next, const std::uint8_t* changed = nullptr,
-                     std::size_t rowLength = 0)
-    {
-        PendingStates::List& mine = pending_.mine();
-        const std::size_t step = rowLength > 0 ? 1 : stride_;
-        const std::size_t component = rowLength > 0 ? rowLength : 1;
-        for (std::size_t j = 0; j < count; ++j)
-        {
-            if (!changed || changed[j])
-            {
-                keepIfChanged(first + j, next + j * step, committed + j * step, component, mine);
-            }
-        }
-    }
+    void readRows(std::size_t first, std::size_t count, double* out, std::size_t rowLength) const;
+    // What an evaluation found a commit would make of the states of slots first .. first +
+    // count (`next`, packed, stride() numbers each): the states that differ from the committed
+    // ones (compared in their compact forms, which are exact) are kept for the commit. The last
+    // evaluation's are the ones committed; clearPending() before it starts. changed (if not
+    // null): HistoryOf's, 0 where next is the committed state and was not written.
+    void keepPending(std::size_t first, std::size_t count, const double* next,
+                     const std::uint8_t* changed = nullptr);
     // A force evaluation starts: what the last one kept is no longer the state to commit.
     void clearPending() { pending_.clear(pool_.width()); }
     // The last evaluation's pending states set aside while other evaluations come (the
@@ -173,36 +146,7 @@ public:
     // The states of the last evaluation become the committed ones, in place: first a record
     // for each sample that had none (the pool grows, one thread), then the copies, each
     // evaluating thread's list by a thread (the lists name distinct slots).
-    void commit()
-    {
-        for (const PendingStates::List& p : pending_.lists())
-        {
-            for (const std::uint32_t slot : p.slots)
-            {
-                if (slot_[slot] == StatePool::none)
-                {
-                    slot_[slot] = pool_.allocate();
-                }
-            }
-        }
-        const std::size_t width = pool_.width();
-        const auto lists = static_cast<long>(pending_.lists().size());
-#pragma omp parallel for schedule(static, 1) if (lists > 1 && omp_get_max_threads() > 1)
-        for (long t = 0; t < lists; ++t)
-        {
-            const PendingStates::List& p = pending_.lists()[static_cast<std::size_t>(t)];
-            for (std::size_t i = 0; i < p.slots.size(); ++i)
-            {
-                const double* state = p.states.at(static_cast<StatePool::Index>(i));
-                double* record = pool_.at(slot_[p.slots[i]]);
-                for (std::size_t k = 0; k < width; ++k)
-                {
-                    record[k] = state[k];
-                }
-            }
-        }
-        clearPending();
-    }
+    void commit();
 
     // Every sample of a particle with history gets a record of its own (a move of the
     // reference is about to re-express them all in place: rebase()).
@@ -266,7 +210,10 @@ public:
     {
         return leavingOffsets_.empty() ? 0 : leavingOffsets_[a + 1] - leavingOffsets_[a];
     }
-    const double* leavingWeights(std::size_t a) const { return &leavingWeights_[leavingOffsets_[a]]; }
+    const double* leavingWeights(std::size_t a) const
+    {
+        return &leavingWeights_[leavingOffsets_[a]];
+    }
     const double* leavingStates(std::size_t a) const
     {
         return &leavingStates_[leavingOffsets_[a] * stride_];
@@ -318,8 +265,8 @@ public:
             if (!(in[0] >= 0.0 && in[0] <= std::numeric_limits<int>::max() &&
                   in[0] == std::floor(in[0])))
             {
-                throw std::runtime_error("sampleHistory: a neighbour index " + std::to_string(in[0]) +
-                                         " that is not a particle's");
+                throw std::runtime_error("sampleHistory: a neighbour index " +
+                                         std::to_string(in[0]) + " that is not a particle's");
             }
             neighbours_[k] = static_cast<int>(in[0]);
             if (!isInitial(in + 1))
@@ -374,25 +321,18 @@ private:
             codec_->expandHistory(pool_.at(slot_[k]), out);
         }
     }
-    // keepPending() of one sample (components `component` apart). (Out of the loop over the
-    // samples, which only looks at their flags: inlined, its addresses filled the registers.)
+    // keepPending() of one sample. (Out of the loop over the samples, which only looks at their
+    // flags: inlined, its addresses filled the registers.)
     [[gnu::noinline]] void keepIfChanged(std::size_t slot, const double* next,
-                                         const double* committed, std::size_t component,
-                                         PendingStates::List& mine)
-    {
-        double state[maxStride], old[maxStride];
-        for (std::size_t c = 0; c < stride_; ++c)
-        {
-            state[c] = next[c * component];
-            old[c] = committed[c * component];
-        }
-        if (!sameBits(state, old))
-        {
-            resizePairArray(mine.slots, mine.slots.size() + 1);
-            mine.slots.back() = static_cast<std::uint32_t>(slot); // as NeighbourList's
-            compact(state, mine.states.at(mine.states.allocate()));
-        }
-    }
+                                         PendingStates::List& mine);
+    // How the codec's expandHistory() fills a packed state, if it only copies: component c is
+    // the compact form's expandFrom_[c], or (constant) expandConstant_[c]. Learnt by expanding
+    // two compact forms of distinct numbers; expandFrom_ stays empty (readRows() then calls
+    // the codec) where the expansion is anything else. (readRows() copies a record's numbers
+    // straight into the rows, without a virtual call and a packed copy in between.)
+    static constexpr std::size_t constant = maxStride;
+    void learnExpansion();
+
     // The compact form of a packed state, which must unpack to it bit for bit.
     void compact(const double* state, double* out) const
     {
@@ -416,7 +356,8 @@ private:
 
     // The old slots follow() did not keep (not `moved`), of particles with history that had
     // samples: their weights and states, by particle (before the old layout is dropped).
-    void setAsideLeaving(const std::vector<int>& body, const std::vector<const Material<D>*>& materials);
+    void setAsideLeaving(const std::vector<int>& body,
+                         const std::vector<const Material<D>*>& materials);
 
     std::string name_ = "sampleHistory";
     bool weighted_ = false;
@@ -425,8 +366,11 @@ private:
     std::vector<double> leavingWeights_;
     std::vector<double> leavingStates_;
     std::size_t stride_ = 0;
-    const Material<D>* codec_ = nullptr; // packs and unpacks the states of every material
-    std::vector<double> initial_;        // the initial state, packed
+    const Material<D>* codec_ = nullptr;  // packs and unpacks the states of every material
+    std::vector<double> initial_;         // the initial state, packed
+    std::vector<double> initialCompact_;  // and compact
+    std::vector<std::size_t> expandFrom_; // learnExpansion()'s
+    std::vector<double> expandConstant_;
     bool current_ = false;
     StatePool pool_;
     PendingStates pending_; // keepPending()'s, for commit()
@@ -439,4 +383,5 @@ private:
 
 } // namespace sph
 
+#include "stabilisation/gradF/SampleHistoryEvaluation.hpp"
 #include "stabilisation/gradF/SampleHistoryLayout.hpp"

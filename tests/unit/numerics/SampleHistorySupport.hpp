@@ -103,18 +103,15 @@ inline std::vector<double> inRows(const std::vector<double>& packed, std::size_t
 }
 
 // One evaluation's `next` states: every third sample (shifted by round) gets a new state, the
-// rest are the committed ones copied, as ReturnMapPlasticity::evaluate writes them; handed to
-// keepPending() packed, or (rowLength > 0) in rows of rowLength.
+// rest are the committed ones copied, as ReturnMapPlasticity::evaluate writes them.
 template <int D>
-std::vector<std::vector<double>> evaluate(Samples<D>& s, int round, std::mt19937& random,
-                                          std::size_t rowLength = 0)
+std::vector<std::vector<double>> evaluate(Samples<D>& s, int round, std::mt19937& random)
 {
     s.history.clearPending();
     std::vector<std::vector<double>> next(s.x.size());
     for (std::size_t a = 0; a < s.x.size(); ++a)
     {
-        const std::vector<double> committed = s.read(a);
-        next[a] = committed;
+        next[a] = s.read(a);
         for (std::size_t j = 0; j < s.list.count(a); ++j)
         {
             if ((j + static_cast<std::size_t>(round)) % 3 == 0)
@@ -123,15 +120,7 @@ std::vector<std::vector<double>> evaluate(Samples<D>& s, int round, std::mt19937
                 std::copy(state.begin(), state.end(), &next[a][j * s.stride]);
             }
         }
-        if (rowLength == 0)
-        {
-            s.history.keepPending(s.list.begin(a), s.list.count(a), committed.data(), next[a].data());
-            continue;
-        }
-        const std::vector<double> pad = s.initial();
-        s.history.keepPending(s.list.begin(a), s.list.count(a),
-                              inRows(committed, s.stride, rowLength, pad).data(),
-                              inRows(next[a], s.stride, rowLength, pad).data(), nullptr, rowLength);
+        s.history.keepPending(s.list.begin(a), s.list.count(a), next[a].data());
     }
     return next;
 }
