@@ -24,18 +24,9 @@ void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double*
             const std::size_t count = std::min(lanes, n - i);
             if (history.perSample())
             {
-                HistoryOf chunk = history;
-                chunk.states += i * history.stride;
-                if (history.next)
-                {
-                    chunk.next += i * history.nextStride;
-                    chunk.dissipation += i;
-                    if (history.changed)
-                    {
-                        chunk.changed += i;
-                    }
-                }
-                evaluateSamplesInLanes(F + i, P + i, psi ? psi + i : nullptr, count, chunk);
+                // (The states from i on are addressed through `history` and i: a copy of it per
+                // block, changed number by number and read back whole, waited on its stores.)
+                evaluateSamplesInLanes(F + i, P + i, psi ? psi + i : nullptr, count, history, i);
                 i += count;
                 continue;
             }
@@ -121,22 +112,24 @@ void ReturnMapPlasticity<D, Model>::evaluateParticlesInLanes(const Mat<D>* F, Ma
 template <int D, class Model>
 void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<D>* P, double* psi,
                                                            std::size_t count,
-                                                           const HistoryOf& history) const
+                                                           const HistoryOf& history,
+                                                           std::size_t first) const
 {
     if constexpr (D >= 2)
     {
         const bool wantNext = history.next != nullptr;
         LanesResult<lanes> out;
         // A sample's wave modulus is never read (the time step takes the particles').
-        returnInLanes<lanes>(F, history.states, history.stride, count, true, wantNext, out, false,
-                             history.componentStride);
-        for (std::size_t i = 0; i < count; ++i)
+        returnInLanes<lanes>(F, history.states + history.at(first, 0), history.stride, count, true,
+                             wantNext, out, false, history.componentStride);
+        for (std::size_t lanePoint = 0; lanePoint < count; ++lanePoint)
         {
-            const int lane = static_cast<int>(i);
-            P[i] = out.stressAt(lane);
+            const int lane = static_cast<int>(lanePoint);
+            const std::size_t i = first + lanePoint; // the state's index in `history`
+            P[lanePoint] = out.stressAt(lane);
             if (psi)
             {
-                psi[i] = out.energy[i];
+                psi[lanePoint] = out.energy[lane];
             }
             if (wantNext)
             {
@@ -144,8 +137,8 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
                 // the return gave it (keepCommitted): the committed state, bit for bit, where
                 // that is the committed pressure. Only the others are written and compared.
                 const double committedPressure = history.states[history.at(i, State::flowPressureAt)];
-                const bool changed = out.flow.deltaGamma[i] > 0.0 ||
-                                     std::bit_cast<std::uint64_t>(out.flow.pressure[i]) !=
+                const bool changed = out.flow.deltaGamma[lane] > 0.0 ||
+                                     std::bit_cast<std::uint64_t>(out.flow.pressure[lane]) !=
                                          std::bit_cast<std::uint64_t>(committedPressure);
                 if (history.changed)
                 {
@@ -155,7 +148,7 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
                 {
                     out.packNext(lane, history.next + i * history.nextStride);
                 }
-                history.dissipation[i] = out.flow.dissipation[i];
+                history.dissipation[i] = out.flow.dissipation[lane];
             }
         }
     }

@@ -240,11 +240,12 @@ private:
     // The principal form of N matrices be (in 2D with their zz components).
     template <int N>
     static void principalOf(const Lane<N> (&be)[D][D], const Lane<N>& beZZ, PrincipalLanes<N, D>& out);
-    // evaluate's two paths, `lanes` points at a time from `first` (i in evaluate).
+    // evaluate's two paths, `lanes` points at a time from `first` (i in evaluate; F, P and psi
+    // already offset, history's states from its first).
     void evaluateParticlesInLanes(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t count,
                                   std::size_t firstParticle) const;
     void evaluateSamplesInLanes(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t count,
-                                const HistoryOf& history) const;
+                                const HistoryOf& history, std::size_t first) const;
     // Two AVX-512 registers of doubles per quantity: the return is chains of divisions and
     // square roots that wait on each other, and two independent registers keep the units busy
     // (the rings' TL gradF row 16 % faster than with eight lanes, 3D within the noise;
