@@ -6,6 +6,8 @@
 #include "materials/plasticity/PlasticHistory.hpp"
 #include "materials/plasticity/ReturnLanes.hpp"
 
+#include <algorithm>
+
 namespace sph
 {
 
@@ -29,6 +31,23 @@ template <int D, int N> struct LanesResult
             }
         }
         return result;
+    }
+    // P of the first `count` lanes into out[0 .. count) (through a block of all N, whose
+    // transposition vectorises).
+    void storeStresses(Mat<D>* out, std::size_t count) const
+    {
+        Mat<D> block[N];
+        for (int i = 0; i < N; ++i)
+        {
+            for (int k = 0; k < D; ++k)
+            {
+                for (int l = 0; l < D; ++l)
+                {
+                    block[i](k, l) = P[k][l][i];
+                }
+            }
+        }
+        std::copy(block, block + count, out);
     }
     PlasticFlow flowAt(int i) const
     {

@@ -7,15 +7,15 @@
 #include "materials/plasticity/ReturnMapLanes.hpp"
 
 #include <bit>
-#include <stdexcept>
 #include <cstdint>
+#include <stdexcept>
 
 namespace sph
 {
 
 template <int D, class Model>
-void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double* psi,
-                                             std::size_t n, HistoryOf history) const
+void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t n,
+                                             HistoryOf history) const
 {
     for (std::size_t i = 0; i < n;)
     {
@@ -122,33 +122,44 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
         // A sample's wave modulus is never read (the time step takes the particles').
         returnInLanes<lanes>(F, history.states + history.at(first, 0), history.stride, count, true,
                              wantNext, out, false, history.componentStride);
-        for (std::size_t lanePoint = 0; lanePoint < count; ++lanePoint)
+        // Lane by lane into P, psi and the flags, each in a loop of its own (they vectorise;
+        // one loop writing all of them per lane did not).
+        out.storeStresses(P, count);
+        if (psi)
         {
-            const int lane = static_cast<int>(lanePoint);
-            const std::size_t i = first + lanePoint; // the state's index in `history`
-            P[lanePoint] = out.stressAt(lane);
-            if (psi)
+            std::copy(out.energy.data(), out.energy.data() + count, psi);
+        }
+        if (!wantNext)
+        {
+            return;
+        }
+        std::copy(out.flow.dissipation.data(), out.flow.dissipation.data() + count,
+                  history.dissipation + first);
+        // A lane that does not flow keeps the committed state but for the flow pressure the
+        // return gave it (keepCommitted): the committed state, bit for bit, where that is the
+        // committed pressure. Only the others are written and compared.
+        std::uint8_t changed[lanes];
+        for (std::size_t lane = 0; lane < count; ++lane)
+        {
+            const double committedPressure =
+                history.states[history.at(first + lane, State::flowPressureAt)];
+            changed[lane] =
+                out.flow.deltaGamma[static_cast<int>(lane)] > 0.0 ||
+                        std::bit_cast<std::uint64_t>(out.flow.pressure[static_cast<int>(lane)]) !=
+                            std::bit_cast<std::uint64_t>(committedPressure)
+                    ? 1
+                    : 0;
+        }
+        if (history.changed)
+        {
+            std::copy(changed, changed + count, history.changed + first);
+        }
+        for (std::size_t lane = 0; lane < count; ++lane)
+        {
+            if (changed[lane] || !history.changed)
             {
-                psi[lanePoint] = out.energy[lane];
-            }
-            if (wantNext)
-            {
-                // A lane that does not flow keeps the committed state but for the flow pressure
-                // the return gave it (keepCommitted): the committed state, bit for bit, where
-                // that is the committed pressure. Only the others are written and compared.
-                const double committedPressure = history.states[history.at(i, State::flowPressureAt)];
-                const bool changed = out.flow.deltaGamma[lane] > 0.0 ||
-                                     std::bit_cast<std::uint64_t>(out.flow.pressure[lane]) !=
-                                         std::bit_cast<std::uint64_t>(committedPressure);
-                if (history.changed)
-                {
-                    history.changed[i] = changed ? 1 : 0;
-                }
-                if (changed || !history.changed)
-                {
-                    out.packNext(lane, history.next + i * history.nextStride);
-                }
-                history.dissipation[i] = out.flow.dissipation[lane];
+                out.packNext(static_cast<int>(lane),
+                             history.next + (first + lane) * history.nextStride);
             }
         }
     }
