@@ -154,6 +154,9 @@ public:
     // first + n at their gradients F (the accepted level), returning the energy this commit
     // dissipates, Σ V0 ΔD. Called once per level, after the level was written.
     virtual bool hasHistory() const { return false; }
+    // Whether evaluate() takes per-sample states in rows (HistoryOf::samplesInRows); a
+    // material that does not say so is handed them packed, one after another.
+    virtual bool readsStatesInRows() const { return false; }
     // The linearised correction of the return map at F from particle a's committed state.
     virtual PlasticCorrection<D> plasticCorrection(const Mat<D>& F, std::size_t a) const
     {

@@ -90,6 +90,7 @@ public:
     double youngsModulus() const override { return elastic_.E; }
 
     bool hasHistory() const override { return true; }
+    bool readsStatesInRows() const override { return D >= 2; } // (the lanes' loads)
     // A = ∂(P − P_tr)/∂F by central differences of the return (step 1e-7 |F|).
     PlasticCorrection<D> plasticCorrection(const Mat<D>& F, std::size_t a) const override;
     double commit(const Mat<D>* F, const double* V0, std::size_t first, std::size_t n) override;

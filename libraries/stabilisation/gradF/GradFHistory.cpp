@@ -65,7 +65,7 @@ HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
     }
     const std::size_t stride = samples_.stride();
     const std::size_t count = list.count(a);
-    if constexpr (D >= 2)
+    if (material.readsStatesInRows())
     {
         // In rows (the material reads each component of 16 samples at once), padded to whole
         // blocks of them with the initial state. (The buffers only grow: resizing them down
