@@ -99,13 +99,7 @@ struct GatheredLanes
             gatherF(F, count);
             return;
         }
-        for (int k = 0; k < D; ++k)
-        {
-            for (int l = 0; l < D; ++l)
-            {
-                f[k][l] = Lane<N>::Constant(k == l ? 1.0 : 0.0);
-            }
-        }
+        gatherF(F, count);
         for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
         {
             const bool unit =
@@ -114,13 +108,6 @@ struct GatheredLanes
         }
         for (std::size_t i = 0; i < count; ++i)
         {
-            for (int k = 0; k < D; ++k)
-            {
-                for (int l = 0; l < D; ++l)
-                {
-                    f[k][l][i] = F[i](k, l);
-                }
-            }
             for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
             {
                 committed[c][i] = states[i * stride + c];
