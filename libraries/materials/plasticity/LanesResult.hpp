@@ -11,6 +11,16 @@
 namespace sph
 {
 
+// What a caller reads of a return in lanes besides the stresses and the flows: the states a
+// commit would write, the wave modulus M + max |τ| (P2.5) and the energy W. What is not
+// wanted is not computed (and its lanes are not meaningful).
+struct LanesWanted
+{
+    bool next = true;
+    bool waveModulus = true;
+    bool energy = true;
+};
+
 template <int D, int N> struct LanesResult
 {
     Lane<N> P[D][D];

@@ -33,15 +33,13 @@ void logarithmicStrain(const Lane<N> (&be)[2][2], const Lane<N>& beZZ, StrainLan
     const Lane<N> det = be[0][0] * be[1][1] - b01 * b01;
     const Lane<N> x2 = (d * d + b01 * b01) / (m * m); // (r/m)²
     const Lane<N> tDet = (det - 1.0) / (det + 1.0);
-    const Lane<N> tZZ = (beZZ - 1.0) / (beZZ + 1.0);
     const Lane<N> t2Det = tDet * tDet;
-    const Lane<N> t2ZZ = tZZ * tZZ;
     Lane<N> shape = Lane<N>::Constant(1.0 / (2 * seriesTerms - 1));
-    Lane<N> seriesDet = shape, seriesZZ = shape;
+    Lane<N> seriesDet = shape;
+    Lane<N> lnZZ = Lane<N>::Zero();
     // be_zz = 1 at every lane (no plastic flow yet, the common case): ln be_zz = 2·0·A = 0
-    // without its chain.
-    const bool unitZZ = countLanes<N>([&](int i) { return beZZ[i] != 1.0; }) == 0;
-    if (unitZZ)
+    // without its chain (and without its division).
+    if (countLanes<N>([&](int i) { return beZZ[i] != 1.0; }) == 0)
     {
         for (int k = seriesTerms - 2; k >= 0; --k)
         {
@@ -52,6 +50,9 @@ void logarithmicStrain(const Lane<N> (&be)[2][2], const Lane<N>& beZZ, StrainLan
     }
     else
     {
+        const Lane<N> tZZ = (beZZ - 1.0) / (beZZ + 1.0);
+        const Lane<N> t2ZZ = tZZ * tZZ;
+        Lane<N> seriesZZ = shape;
         for (int k = seriesTerms - 2; k >= 0; --k)
         {
             const double coefficient = 1.0 / (2 * k + 1);
@@ -59,11 +60,11 @@ void logarithmicStrain(const Lane<N> (&be)[2][2], const Lane<N>& beZZ, StrainLan
             seriesDet = seriesDet * t2Det + coefficient;
             seriesZZ = seriesZZ * t2ZZ + coefficient;
         }
+        lnZZ = 2.0 * tZZ * seriesZZ;
+        laneFunctions::logarithmBeyondSeries<N>(beZZ, t2ZZ, lnZZ);
     }
     Lane<N> lnDet = 2.0 * tDet * seriesDet;
-    Lane<N> lnZZ = unitZZ ? Lane<N>::Zero() : Lane<N>(2.0 * tZZ * seriesZZ);
     laneFunctions::logarithmBeyondSeries<N>(det, t2Det, lnDet);
-    laneFunctions::logarithmBeyondSeries<N>(beZZ, t2ZZ, lnZZ);
     if (countLanes<N>([&](int i) { return !(x2[i] <= seriesRange); }) > 0)
     {
         for (int i = 0; i < N; ++i)

@@ -31,8 +31,7 @@ template <int D, class Model>
 template <int N>
 void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double* states,
                                                   std::size_t stride, std::size_t count, bool flow,
-                                                  bool wantNext, LanesResult<N>& out,
-                                                  bool wantWaveModulus,
+                                                  LanesWanted wanted, LanesResult<N>& out,
                                                   std::size_t componentStride) const
 {
     static_assert(D == 2 || D == 3, "the bar (1D) has its own return");
@@ -43,7 +42,7 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     Lane<N> withoutAxes = Lane<N>::Zero();
     if (form_ == LawForm::series)
     {
-        returnWithoutAxes<N>(in, be, finv, flow, wantNext, wantWaveModulus, out, withoutAxes);
+        returnWithoutAxes<N>(in, be, finv, flow, wanted, out, withoutAxes);
         if (countLanes<N>([&](int i) { return withoutAxes[i] == 0.0; }) == 0)
         {
             return;
@@ -51,7 +50,7 @@ void ReturnMapPlasticity<D, Model>::returnInLanes(const Mat<D>* F, const double*
     }
     // The points beyond the series' range (or every point, when asked): in principal axes.
     LanesResult<N> inAxes;
-    returnInAxes<N>(in, be, finv, flow, wantNext, wantWaveModulus, inAxes);
+    returnInAxes<N>(in, be, finv, flow, wanted, inAxes);
     for (int i = 0; i < N; ++i)
     {
         if (withoutAxes[i] == 0.0)
@@ -69,8 +68,8 @@ template <int N>
 void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, State>& in,
                                                       const Lane<N> (&be)[D][D],
                                                       const Lane<N> (&finv)[D][D], bool flow,
-                                                      bool wantNext, bool wantWaveModulus,
-                                                      LanesResult<N>& out, Lane<N>& inRange) const
+                                                      LanesWanted wanted, LanesResult<N>& out,
+                                                      Lane<N>& inRange) const
 {
     using Law = AxesFreeLaw<D>;
     StrainLanes<N, 6> strain;
@@ -94,14 +93,17 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
     lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return tau[at[k][m]]; },
                                [&](int m, int l) -> const Lane<N>& { return finv[l][m]; }, out.P);
     out.waveModulus = Lane<N>::Zero();
-    if (wantWaveModulus)
+    if (wanted.waveModulus)
     {
         out.waveModulus = Law::template largestAbsolute<N>(tau);
         out.waveModulus += waveModulusLanes<N, 6>(returned);
     }
-    out.energy = elasticEnergyLanes<N, 6>(returned);
-    addExtraEnergy<N>(in.alpha(), out);
-    if (!wantNext)
+    if (wanted.energy)
+    {
+        out.energy = elasticEnergyLanes<N, 6>(returned);
+        addExtraEnergy<N>(in.alpha(), out);
+    }
+    if (!wanted.next)
     {
         return;
     }
@@ -120,8 +122,7 @@ template <int N>
 void ReturnMapPlasticity<D, Model>::returnInAxes(const GatheredLanes<D, N, State>& in,
                                                  const Lane<N> (&be)[D][D],
                                                  const Lane<N> (&finv)[D][D], bool flow,
-                                                 bool wantNext, bool wantWaveModulus,
-                                                 LanesResult<N>& out) const
+                                                 LanesWanted wanted, LanesResult<N>& out) const
 {
     PrincipalLanes<N, D> principal;
     principalOf<N>(be, in.trialZZ(), principal);
@@ -158,7 +159,7 @@ void ReturnMapPlasticity<D, Model>::returnInAxes(const GatheredLanes<D, N, State
     lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return S[k][m]; },
                                [&](int m, int l) -> const Lane<N>& { return finv[l][m]; }, out.P);
     out.waveModulus = Lane<N>::Zero();
-    if (wantWaveModulus)
+    if (wanted.waveModulus)
     {
         const Lane<N> modulus = waveModulusLanes<N>(returned);
         for (int i = 0; i < N; ++i)
@@ -168,9 +169,12 @@ void ReturnMapPlasticity<D, Model>::returnInAxes(const GatheredLanes<D, N, State
                 std::max(std::max(std::abs(tau[0][i]), std::abs(tau[1][i])), std::abs(tau[2][i]));
         }
     }
-    out.energy = elasticEnergyLanes<N>(returned);
-    addExtraEnergy<N>(in.alpha(), out);
-    if (!wantNext)
+    if (wanted.energy)
+    {
+        out.energy = elasticEnergyLanes<N>(returned);
+        addExtraEnergy<N>(in.alpha(), out);
+    }
+    if (!wanted.next)
     {
         return;
     }

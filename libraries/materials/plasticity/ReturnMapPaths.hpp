@@ -94,7 +94,7 @@ void ReturnMapPlasticity<D, Model>::evaluateParticlesInLanes(const Mat<D>* F, Ma
             state(firstParticle + i).pack(states + i * State::packedSize);
         }
         LanesResult<lanes> out;
-        returnInLanes<lanes>(F, states, State::packedSize, count, true, true, out);
+        returnInLanes<lanes>(F, states, State::packedSize, count, true, {}, out);
         for (std::size_t i = 0; i < count; ++i)
         {
             const int lane = static_cast<int>(i);
@@ -121,7 +121,7 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
         LanesResult<lanes> out;
         // A sample's wave modulus is never read (the time step takes the particles').
         returnInLanes<lanes>(F, history.states + history.at(first, 0), history.stride, count, true,
-                             wantNext, out, false, history.componentStride);
+                             {wantNext, false, psi != nullptr}, out, history.componentStride);
         // Lane by lane into P, psi and the flags, each in a loop of its own (they vectorise;
         // one loop writing all of them per lane did not).
         out.storeStresses(P, count);
@@ -199,7 +199,7 @@ void ReturnMapPlasticity<D, Model>::particleReturns(const Mat<D>* F, std::size_t
             return;
         }
         LanesResult<lanes> r;
-        returnInLanes<lanes>(missingF, states, State::packedSize, count, true, true, r);
+        returnInLanes<lanes>(missingF, states, State::packedSize, count, true, {}, r);
         for (std::size_t j = 0; j < count; ++j)
         {
             const int lane = static_cast<int>(j);

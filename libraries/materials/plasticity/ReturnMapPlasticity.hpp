@@ -221,18 +221,19 @@ private:
     template <int N>
     // (componentStride: 1, or the states in rows, HistoryOf::samplesInRows)
     void returnInLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count,
-                       bool flow, bool wantNext, LanesResult<N>& out, bool wantWaveModulus = true,
+                       bool flow, LanesWanted wanted, LanesResult<N>& out,
                        std::size_t componentStride = 1) const;
     // Its two forms (§P12–§P13 and §P4) from the gathered points, their trial be and F⁻¹ (the
-    // wave modulus only where asked: a gradF sample's is never read).
+    // wave modulus and the energy only where asked: a gradF sample's wave modulus is never
+    // read, nor its energy unless the energy is).
     template <int N>
     void returnWithoutAxes(const GatheredLanes<D, N, State>& in, const Lane<N> (&be)[D][D],
-                           const Lane<N> (&finv)[D][D], bool flow, bool wantNext,
-                           bool wantWaveModulus, LanesResult<N>& out, Lane<N>& inRange) const;
+                           const Lane<N> (&finv)[D][D], bool flow, LanesWanted wanted,
+                           LanesResult<N>& out, Lane<N>& inRange) const;
     template <int N>
     void returnInAxes(const GatheredLanes<D, N, State>& in, const Lane<N> (&be)[D][D],
-                      const Lane<N> (&finv)[D][D], bool flow, bool wantNext,
-                      bool wantWaveModulus, LanesResult<N>& out) const;
+                      const Lane<N> (&finv)[D][D], bool flow, LanesWanted wanted,
+                      LanesResult<N>& out) const;
     template <int N, int C>
     bool returnOrTrial(StrainLanes<N, C>& strain, const DeviatorLanes<N, C>& trial,
                        const Lane<N>& alpha, const Lane<N>& flowPressure, bool flow,

@@ -50,7 +50,7 @@ ReturnMapPlasticity<D, Model>::returnMap(const Mat<D>& F, const State& committed
         double packed[State::packedSize];
         committed.pack(packed);
         LanesResult<lanes> one;
-        returnInLanes<lanes>(&F, packed, State::packedSize, 1, flow, wantNext, one);
+        returnInLanes<lanes>(&F, packed, State::packedSize, 1, flow, {wantNext, true, true}, one);
         r.P = one.stressAt(0);
         r.energy = one.energy[0];
         r.flow = one.flowAt(0);
