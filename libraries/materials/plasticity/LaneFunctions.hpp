@@ -7,6 +7,7 @@
 
 #include "materials/plasticity/ReturnLanes.hpp"
 
+#include <array>
 #include <cmath>
 
 namespace sph
@@ -25,9 +26,10 @@ template <int N>
 [[gnu::always_inline]] inline Lane<N> atanhSeries(const Lane<N>& s)
 {
     Lane<N> sum = Lane<N>::Constant(1.0 / (2 * seriesTerms - 1));
+#pragma GCC unroll 16
     for (int k = seriesTerms - 2; k >= 0; --k)
     {
-        sum = sum * s + 1.0 / (2 * k + 1);
+        sum = multiplyAdd<N>(sum, s, 1.0 / (2 * k + 1));
     }
     return sum;
 }
@@ -62,19 +64,32 @@ inline Lane<N> logarithm(const Lane<N>& y)
     return result;
 }
 
-// exp y by its Horner series to expDegree where |y| ≤ expRange (P12.6: the terms left out are
-// below 4e-18 of the result), the C library's elsewhere (a NaN included).
+// 1/k! for k ≤ 16, each rounded once (k! itself is exact in a double up to 18!).
+constexpr std::array<double, 17> inverseFactorials = [] {
+    std::array<double, 17> c{};
+    double factorial = 1.0;
+    for (std::size_t k = 0; k < c.size(); ++k)
+    {
+        factorial *= k > 0 ? static_cast<double>(k) : 1.0;
+        c[k] = 1.0 / factorial;
+    }
+    return c;
+}();
+
+// exp y = Σ_{k≤n} y^k/k! by Horner with fused multiply-adds, n = expDegree, where |y| ≤ expRange
+// (P12.6: the terms left out are below 4e-18 of the result), the C library's elsewhere (a NaN
+// included).
 constexpr double expRange = 0.125;
 constexpr int expDegree = 10;
 
 template <int N>
 inline Lane<N> exponential(const Lane<N>& y)
 {
-    // 1 + y (1 + y/2 (1 + y/3 (… (1 + y/n)))), from the innermost bracket out.
-    Lane<N> sum = Lane<N>::Ones();
-    for (int k = expDegree; k >= 1; --k)
+    Lane<N> sum = Lane<N>::Constant(inverseFactorials[expDegree]);
+#pragma GCC unroll 16
+    for (int k = expDegree - 1; k >= 0; --k)
     {
-        sum = 1.0 + y * sum / k;
+        sum = multiplyAdd<N>(sum, y, inverseFactorials[static_cast<std::size_t>(k)]);
     }
     if (countLanes<N>([&](int i) { return !(std::abs(y[i]) <= expRange); }) > 0)
     {

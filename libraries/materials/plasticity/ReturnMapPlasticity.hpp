@@ -252,7 +252,8 @@ private:
     // square roots that wait on each other, and two independent registers keep the units busy
     // (the rings' TL gradF row 16 % faster than with eight lanes, 3D within the noise;
     // docs/performance.md). The library is built without fused multiply-adds
-    // (-ffp-contract=off, CMakeLists.txt), so that every width computes a lane alike.
+    // (-ffp-contract=off, CMakeLists.txt), so that every width computes a lane alike; the 3D
+    // series fuse explicitly, alike in every width (multiplyAdd, ReturnLanes.hpp).
     static constexpr std::size_t lanes = 16;
 
     // The memo of each particle's last return: the time step and the commit reuse the force

@@ -45,7 +45,7 @@ ReturnMapPlasticity<D, Model>::returnMap(const Mat<D>& F, const State& committed
         // The point in the first of `lanes` lanes (the others idle): every return of a point
         // runs the same instructions on its lane, one point or sixteen, so a point gives the
         // same digits whichever path evaluates it (the memo and restarts rely on it). (A
-        // one-lane instantiation would too now that the library fuses no multiply-adds, but
+        // one-lane instantiation would too (the library fuses multiply-adds only explicitly), but
         // one instantiation is one code to trust.)
         double packed[State::packedSize];
         committed.pack(packed);

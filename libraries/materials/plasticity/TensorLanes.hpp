@@ -71,8 +71,8 @@ struct PolynomialLanes
     [[gnu::always_inline]] void multiplyByA()
     {
         const Lane<N> g = gamma;
-        gamma = beta + g * I1;
-        beta = alpha - g * I2;
+        gamma = multiplyAdd<N>(g, I1, beta);
+        beta = multiplyAdd<N>(-g, I2, alpha);
         alpha = g * I3;
     }
     // The matrix α 1 + β a + γ a² (aSquared = a²).
@@ -121,6 +121,7 @@ void logarithmicStrain(const SymmetricLanes<N>& be, StrainLanes<N, 6>& strain, L
     // in the algebra of e (P12.5).
     PolynomialLanes<N> q(e);
     q.alpha = Lane<N>::Constant(((logDegree - 1) % 2 == 0 ? 1.0 : -1.0) / logDegree);
+#pragma GCC unroll 16
     for (int j = logDegree - 2; j >= 0; --j)
     {
         q.multiplyByA();
@@ -153,17 +154,14 @@ void exponentialOfTwice(const DeviatorLanes<N, 6>& strain, SymmetricLanes<N>& be
     {
         x[c] = 2.0 * strain.dev[c];
     }
-    // exp(x) = 1 + x (1 + x/2 (1 + x/3 (… (1 + x/n)))), from the innermost bracket out, in the
-    // algebra of x (P12.5).
+    // exp(x) = Σ x^k/k! by Horner in the algebra of x (P12.5), from the highest power down.
     PolynomialLanes<N> p(x);
-    p.alpha = Lane<N>::Ones();
-    for (int k = expDegree; k >= 1; --k)
+    p.alpha = Lane<N>::Constant(laneFunctions::inverseFactorials[expDegree]);
+#pragma GCC unroll 16
+    for (int k = expDegree - 1; k >= 0; --k)
     {
         p.multiplyByA();
-        p.alpha /= k;
-        p.beta /= k;
-        p.gamma /= k;
-        p.alpha += 1.0;
+        p.alpha += laneFunctions::inverseFactorials[static_cast<std::size_t>(k)];
     }
     multiplyCommuting<N>(x, x, xSquared);
     p.assemble(x, xSquared, sum);
