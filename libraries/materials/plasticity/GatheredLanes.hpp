@@ -32,6 +32,27 @@ inline void multiply(const A& a, const B& b, double (&out)[D][D])
     }
 }
 
+// Σₘ a(m) b(m) over m < D at lane i: in 3D by fused multiply-adds (docs/theory/plasticity.md
+// §P12, "Fused multiply-adds"), in 2D a product and a sum each, as it always was (2D keeps its
+// digits: its law did not get faster with fused steps).
+template <int D, class A, class B>
+[[gnu::always_inline]] inline double dotAt(const A& a, const B& b, int i)
+{
+    if constexpr (D == 3)
+    {
+        return multiplyAdd(a(2)[i], b(2)[i], multiplyAdd(a(1)[i], b(1)[i], a(0)[i] * b(0)[i]));
+    }
+    else
+    {
+        double sum = 0.0;
+        for (int m = 0; m < D; ++m)
+        {
+            sum += a(m)[i] * b(m)[i];
+        }
+        return sum;
+    }
+}
+
 // out = Σₘ a(k, m) b(m, l) lane by lane, D×D, a and b returning lanes.
 template <int N, int D, class A, class B>
 inline void multiplyLanes(const A& a, const B& b, Lane<N> (&out)[D][D])
@@ -42,12 +63,8 @@ inline void multiplyLanes(const A& a, const B& b, Lane<N> (&out)[D][D])
         {
             for (int i = 0; i < N; ++i)
             {
-                double sum = 0.0;
-                for (int m = 0; m < D; ++m)
-                {
-                    sum += a(k, m)[i] * b(m, l)[i];
-                }
-                out[k][l][i] = sum;
+                out[k][l][i] = dotAt<D>([&](int m) -> const Lane<N>& { return a(k, m); },
+                                        [&](int m) -> const Lane<N>& { return b(m, l); }, i);
             }
         }
     }
@@ -161,8 +178,34 @@ struct GatheredLanes
         lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return f[k][m]; },
                                    [&](int m, int l) -> const Lane<N>& { return committed[m * D + l]; },
                                    t);
-        lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return t[k][m]; },
-                                   [&](int m, int l) -> const Lane<N>& { return f[l][m]; }, be);
+        if constexpr (D == 3)
+        {
+            // be is symmetric: its upper triangle, mirrored.
+            for (int k = 0; k < D; ++k)
+            {
+                for (int l = k; l < D; ++l)
+                {
+                    const auto row = [&](int m) -> const Lane<N>& { return t[k][m]; };
+                    const auto column = [&](int m) -> const Lane<N>& { return f[l][m]; };
+                    for (int i = 0; i < N; ++i)
+                    {
+                        be[k][l][i] = lanes::dotAt<D>(row, column, i);
+                    }
+                }
+            }
+            for (int k = 0; k < D; ++k)
+            {
+                for (int l = 0; l < k; ++l)
+                {
+                    be[k][l] = be[l][k];
+                }
+            }
+        }
+        else
+        {
+            lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return t[k][m]; },
+                                       [&](int m, int l) -> const Lane<N>& { return f[l][m]; }, be);
+        }
     }
     // F⁻¹ by cofactors (the transposed cofactor matrix over det F).
     void inverse(Lane<N> (&finv)[D][D]) const

@@ -76,9 +76,9 @@ constexpr std::array<double, 17> inverseFactorials = [] {
     return c;
 }();
 
-// exp y = Σ_{k≤n} y^k/k! by Horner with fused multiply-adds, n = expDegree, where |y| ≤ expRange
-// (P12.6: the terms left out are below 4e-18 of the result), the C library's elsewhere (a NaN
-// included).
+// exp y = Σ_{k≤n} y^k/k! by Horner with fused multiply-adds, n = expDegree, where
+// |y| ≤ expRange (P12.6: the terms left out are below 4e-18 of the result), the C library's
+// elsewhere (a NaN included).
 constexpr double expRange = 0.125;
 constexpr int expDegree = 10;
 
