@@ -131,14 +131,16 @@ void logarithmicStrain(const SymmetricLanes<N>& be, StrainLanes<N, 6>& strain, L
     SymmetricLanes<N> eSquared, logarithm;
     multiplyCommuting<N>(e, e, eSquared);
     q.assemble(e, eSquared, logarithm);
+    // (Thirds as products: a division here was what the loop waited on.)
+    constexpr double third = 1.0 / 3.0;
     for (int i = 0; i < N; ++i)
     {
         // tr ln b̄ = 0 up to round-off: the deviator is taken explicitly.
-        const double trace = (logarithm[0][i] + logarithm[1][i] + logarithm[2][i]) / 3.0;
+        const double trace = (logarithm[0][i] + logarithm[1][i] + logarithm[2][i]) * third;
         for (int c = 0; c < 6; ++c)
         {
             const double dev = 0.5 * (c < 3 ? logarithm[c][i] - trace : logarithm[c][i]);
-            strain.eps[c][i] = c < 3 ? dev + volumetric[i] / 3.0 : dev;
+            strain.eps[c][i] = c < 3 ? dev + volumetric[i] * third : dev;
         }
     }
 }
