@@ -38,18 +38,21 @@ struct AxesFreeLaw<2>
         return planeLanes::largestAbsolutePrincipal<N>(tau);
     }
 
-    // exp(2ε) in closed form for each flowing lane alone (the others keep their state).
+    // exp(2ε) in lanes (PlaneLanes.hpp), kept where a lane flows.
     template <int N, class State>
     static void writeFlowingStates(const DeviatorLanes<N, 6>& returned, const Lane<N> (&finv)[2][2],
                                    LanesResult<2, N>& out)
     {
+        Lane<N> returnedBe[2][2], returnedZZ;
+        planeLanes::exponentialOfTwice<N>(returned, returnedBe, returnedZZ);
         for (int i = 0; i < N; ++i)
         {
             if (out.flow.deltaGamma[i] > 0.0)
             {
-                double B[2][2], beZZ;
-                planeLanes::exponentialOfTwice<N>(returned, i, B, beZZ);
-                lanes::writeFlowingState<2, N, State>(finv, B, beZZ, out.flow, i, out.next);
+                const double B[2][2] = {{returnedBe[0][0][i], returnedBe[0][1][i]},
+                                        {returnedBe[1][0][i], returnedBe[1][1][i]}};
+                lanes::writeFlowingState<2, N, State>(finv, B, returnedZZ[i], out.flow, i,
+                                                      out.next);
             }
         }
     }

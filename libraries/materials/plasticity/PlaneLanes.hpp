@@ -86,23 +86,54 @@ void logarithmicStrain(const Lane<N> (&be)[2][2], const Lane<N>& beZZ, StrainLan
     strain.eps[5] = Lane<N>::Zero();
 }
 
-// (P13.3): be = exp(2ε) of lane i's returned strain: the in-plane block B and be_zz.
+// (P13.3)–(P13.4): be = exp(2ε) of N returned strains, the in-plane block B and be_zz, in
+// lanes. With a the in-plane mean, δ = (d c; c −d) the in-plane deviator and x² = 4(d² + c²):
+// B = e^{2a} (cosh x 1 + 2 (sinh x / x) δ), be_zz = e^{2ε_zz}; cosh x and sinh x / x by their
+// even series in x² where x² ≤ hyperbolicRange, the exponentials by laneFunctions::exponential
+// (P12.6), the C library beyond (lane by lane: which branch a lane takes depends on its own
+// strain only).
+constexpr double hyperbolicRange = 1.0 / 16.0; // x ≤ 1/4: an in-plane elastic shear of 12 %
+constexpr int hyperbolicTerms = 7;             // the terms left out below x¹⁴/14! < 5e-20
+
 template <int N>
-void exponentialOfTwice(const DeviatorLanes<N, 6>& strain, int i, double (&B)[2][2], double& beZZ)
+void exponentialOfTwice(const DeviatorLanes<N, 6>& strain, Lane<N> (&B)[2][2], Lane<N>& beZZ)
 {
-    const double third = strain.volumetric[i] / 3.0;
-    const double a = 0.5 * (strain.dev[0][i] + strain.dev[1][i]) + third;
-    const double d = 0.5 * (strain.dev[0][i] - strain.dev[1][i]);
-    const double c = strain.dev[3][i];
-    const double rho = std::sqrt(d * d + c * c);
-    const double dilation = std::exp(2.0 * a);
-    const double diagonal = dilation * std::cosh(2.0 * rho);
-    const double shape = dilation * (rho > 0.0 ? std::sinh(2.0 * rho) / rho : 2.0);
+    using laneFunctions::inverseFactorials;
+    const Lane<N> third = strain.volumetric / 3.0;
+    const Lane<N> a = 0.5 * (strain.dev[0] + strain.dev[1]) + third;
+    const Lane<N> d = 0.5 * (strain.dev[0] - strain.dev[1]);
+    const Lane<N>& c = strain.dev[3];
+    const Lane<N> x2 = 4.0 * (d * d + c * c);
+    // cosh x = Σ x^2k/(2k)!, sinh x / x = Σ x^2k/(2k + 1)!, by Horner in x².
+    Lane<N> coshX = Lane<N>::Constant(inverseFactorials[2 * hyperbolicTerms - 2]);
+    Lane<N> sinhXOverX = Lane<N>::Constant(inverseFactorials[2 * hyperbolicTerms - 1]);
+#pragma GCC unroll 16
+    for (int k = hyperbolicTerms - 2; k >= 0; --k)
+    {
+        coshX = multiplyAdd<N>(coshX, x2, inverseFactorials[static_cast<std::size_t>(2 * k)]);
+        sinhXOverX =
+            multiplyAdd<N>(sinhXOverX, x2, inverseFactorials[static_cast<std::size_t>(2 * k + 1)]);
+    }
+    if (countLanes<N>([&](int i) { return !(x2[i] <= hyperbolicRange); }) > 0)
+    {
+        for (int i = 0; i < N; ++i)
+        {
+            if (!(x2[i] <= hyperbolicRange))
+            {
+                const double x = std::sqrt(x2[i]);
+                coshX[i] = std::cosh(x);
+                sinhXOverX[i] = std::sinh(x) / x;
+            }
+        }
+    }
+    const Lane<N> dilation = laneFunctions::exponential<N>(2.0 * a);
+    const Lane<N> diagonal = dilation * coshX;
+    const Lane<N> shape = 2.0 * dilation * sinhXOverX;
     B[0][0] = diagonal + shape * d;
     B[1][1] = diagonal - shape * d;
     B[0][1] = shape * c;
     B[1][0] = B[0][1];
-    beZZ = std::exp(2.0 * (strain.dev[2][i] + third));
+    beZZ = laneFunctions::exponential<N>(2.0 * (strain.dev[2] + third));
 }
 
 // maxᵢ |τᵢ| of N plane-strain stresses held as six components: the in-plane block's principal
