@@ -78,6 +78,10 @@ TEST_CASE("column collapse, coarse: UL none completes, its time step does not co
 {
     // With the total-F bound (P2.5) the step fell a hundredfold as the flow sheared the column
     // (5 mm: 1.8e-7 s at 0.55 s); with the stretch since the reference it stays near its start.
+    // The front of this unstable scheme (stabilityMonitor: UNSTABLE) follows round-off: 0.595 m
+    // before the plane-strain update in lanes (P13.4, 2026-11-29), 0.608 m after, 0.522 m with
+    // `logarithm principalAxes` (the same law in another order); the bounds catch a column that
+    // does not collapse (≈ 0.2 m) or runs away, not those digits.
     test::TempDir dir;
     const auto caseDir = runCoarseCollapse(
         dir, {"-set", "formulation={ type updatedLagrangian; }", "-set", "stabilisation={ type none; }",
@@ -87,7 +91,7 @@ TEST_CASE("column collapse, coarse: UL none completes, its time step does not co
     INFO(steps << " steps, front " << front << " m");
     CHECK(steps < 20000);
     CHECK(front > 0.35);
-    CHECK(front < 0.6);
+    CHECK(front < 0.65);
 }
 
 // The seed paper's method extended to plastic flow (docs/theory/gradF-plastic.md): UL gradF with
@@ -127,8 +131,11 @@ TEST_CASE("column collapse, coarse: UL gradF elasticState completes, near the me
 // support cannot reach the old energy the weights are widened and the residual is what is left
 // (docs/theory/gradF-plastic.md §G9). (2.6e-3 J/m and 1.82 cm before the bracket's mend, most
 // of it reachable energies the bracket missed; before 2026-11-28 1.14 cm and 5.9e-4 J/m, the
-// weights of opened particles then chosen by round-off, (G22.3); the distance's bound is the
-// TL test's, one column of the loose slope deciding it at this spacing, results.md §5.)
+// weights of opened particles then chosen by round-off, (G22.3); one column of the loose slope
+// decides the distance at this spacing, results.md §5.) That column follows round-off: the
+// largest distance was 1.43 cm before the plane-strain update in lanes (P13.4, 2026-11-29), is
+// 2.02 cm after it, and 0.95 cm with `logarithm principalAxes` (the same law in another order),
+// the top 0.0979–0.0980 m and the closest pair 0.495 in all three: the bound is 2.5 cm here.
 TEST_CASE("column collapse, coarse: UL gradF conserving, moved every step, keeps pairs apart, moves small",
           "[geomaterials][columnCollapse][gradF]")
 {
@@ -136,7 +143,7 @@ TEST_CASE("column collapse, coarse: UL gradF conserving, moved every step, keeps
     const auto caseDir =
         runCoarseCollapse(dir, {"-set", "formulation.referenceUpdateInterval=1", "-set",
                                 "controlDict.functions.energy.referenceMoves=yes"});
-    checkConservingDeposit(caseDir, 0.02, 5e-5);
+    checkConservingDeposit(caseDir, 0.025, 5e-5);
 }
 
 // The tutorial as it is (system/sphSchemes: the same scheme, the reference moved every fifth
@@ -145,14 +152,18 @@ TEST_CASE("column collapse, coarse: UL gradF conserving, moved every step, keeps
 // pair 0.49, the moves' rises 2.6e-12 J/m of the 7.7 J/m gravity does, round-off (2.7e-3 J/m
 // before the bracket's mend; the kernel's weights, 2.5e-2 of gravity). The distance's bound is
 // the TL test's: at 10 mm the largest distance is decided by one column of the loose slope
-// (results.md §5).
+// (results.md §5). The rises are round-off where every particle's bracket reaches the energy
+// it must keep and a residual where one does not (§G9), which round-off decides: 6.4e-12 J/m
+// before the plane-strain update in lanes (P13.4, 2026-11-29), 1.09e-5 J/m after it (1.4e-6 of
+// gravity; largest distance 0.48 cm, top 0.0980 m, closest pair 0.49), 2.1e-6 J/m with
+// `logarithm principalAxes`: the bound is 5e-6 of gravity.
 TEST_CASE("column collapse, coarse: the tutorial's scheme, moved every fifth step, keeps pairs apart",
           "[geomaterials][columnCollapse][gradF]")
 {
     test::TempDir dir;
     const auto caseDir =
         runCoarseCollapse(dir, {"-set", "controlDict.functions.energy.referenceMoves=yes"});
-    checkConservingDeposit(caseDir, 0.02, 1e-6);
+    checkConservingDeposit(caseDir, 0.02, 5e-6);
 }
 
 // The tutorial's scheme with the samples of opened particles taking their state at each move
