@@ -137,6 +137,9 @@ public:
     // null): HistoryOf's, 0 where next is the committed state and was not written.
     void keepPending(std::size_t first, std::size_t count, const double* next,
                      const std::uint8_t* changed = nullptr);
+    // Whether the records lie in the order of the slots that name them (what a relocation
+    // leaves; for the tests).
+    bool recordsInSlotOrder() const;
     // A force evaluation starts: what the last one kept is no longer the state to commit.
     void clearPending() { pending_.clear(pool_.width()); }
     // The last evaluation's pending states set aside while other evaluations come (the
@@ -145,7 +148,10 @@ public:
     void restorePending() { pending_.restore(); }
     // The states of the last evaluation become the committed ones, in place: first a record
     // for each sample that had none (the pool grows, one thread), then the copies, each
-    // evaluating thread's list by a thread (the lists name distinct slots).
+    // evaluating thread's list by a thread (the lists name distinct slots). The records are
+    // then put back in slot order once more than 1/relocateAfter of them are new since they
+    // last were: a list that never changes (total Lagrangian) is never follow()ed again, and
+    // its records would stay in the order the samples first flowed.
     void commit();
 
     // Every sample of a particle with history gets a record of its own (a move of the
@@ -287,8 +293,9 @@ public:
     static constexpr std::size_t maxStride = 16;
 
 private:
-    // follow() relocates the records once more than 1/relocateAfter of them were handed out
-    // since they were last in order (the cost of a relocation is one pass over the records).
+    // follow() and commit() relocate the records once more than 1/relocateAfter of them were
+    // handed out since they were last in order (the cost of a relocation is one pass over the
+    // records).
     static constexpr std::size_t relocateAfter = 8;
     // Slot markers of follow() (above any record StatePool hands out): a kept pair's old slot;
     // a new pair that starts from its neighbour's state, or from its owner's.
@@ -346,8 +353,11 @@ private:
     // The records laid out in the order of the slots that name them, so that an evaluation
     // (which reads them particle by particle) streams through the pool. Only where they are
     // stored changes: every state, and so every result, is the same.
-    // (destination: a buffer of follow()'s, free again by then, for the records' new places.)
+    // (destination: a buffer for the records' new places, follow()'s, free again by then, or
+    // commit()'s own.)
     void relocateInSlotOrder(std::vector<StatePool::Index>& destination);
+    // Whether the records have decayed far enough from slot order to relocate them.
+    bool relocationDue() const { return pool_.allocatedSinceOrdered() * relocateAfter > pool_.held(); }
 
     // follow()'s new pairs that start from a state of their own, in slot order.
     void storeNewStates(const NeighbourList& list, const std::vector<int>& body,

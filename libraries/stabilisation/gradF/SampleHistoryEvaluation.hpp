@@ -16,25 +16,60 @@ void SampleHistory<D>::readRows(std::size_t first, std::size_t count, double* ou
     {
         std::fill(out + c * rowLength, out + (c + 1) * rowLength, initial_[c]);
     }
-    double state[maxStride];
-    for (std::size_t j = 0; j < count; ++j)
+    if (expandFrom_.empty())
     {
-        const StatePool::Index slot = slot_[first + j];
-        if (slot == StatePool::none)
+        double state[maxStride];
+        for (std::size_t j = 0; j < count; ++j)
         {
-            continue;
+            const StatePool::Index slot = slot_[first + j];
+            if (slot != StatePool::none)
+            {
+                codec_->expandHistory(pool_.at(slot), state);
+                for (std::size_t c = 0; c < stride_; ++c)
+                {
+                    out[c * rowLength + j] = state[c];
+                }
+            }
         }
-        const double* record = pool_.at(slot);
-        if (expandFrom_.empty())
+        return;
+    }
+    // The samples with a record, a block at a time, then their rows one component at a time: a
+    // copy per number without a branch (the component's source is the same for every record),
+    // and nothing for a constant component that is the initial state's (already there).
+    constexpr std::size_t block = 64;
+    const double* records[block];
+    std::uint32_t at[block];
+    for (std::size_t begin = 0; begin < count; begin += block)
+    {
+        std::size_t held = 0;
+        for (std::size_t j = begin; j < std::min(begin + block, count); ++j)
         {
-            codec_->expandHistory(record, state);
-            record = state;
+            const StatePool::Index slot = slot_[first + j];
+            if (slot != StatePool::none)
+            {
+                records[held] = pool_.at(slot);
+                at[held] = static_cast<std::uint32_t>(j);
+                ++held;
+            }
         }
-        for (std::size_t c = 0; c < stride_; ++c)
+        for (std::size_t c = 0; c < stride_ && held > 0; ++c)
         {
-            out[c * rowLength + j] = expandFrom_.empty()          ? record[c]
-                                     : expandFrom_[c] == constant ? expandConstant_[c]
-                                                                  : record[expandFrom_[c]];
+            double* row = out + c * rowLength;
+            if (expandFrom_[c] != constant)
+            {
+                const std::size_t from = expandFrom_[c];
+                for (std::size_t k = 0; k < held; ++k)
+                {
+                    row[at[k]] = records[k][from];
+                }
+            }
+            else if (!sameBits(&expandConstant_[c], &initial_[c], 1))
+            {
+                for (std::size_t k = 0; k < held; ++k)
+                {
+                    row[at[k]] = expandConstant_[c];
+                }
+            }
         }
     }
 }
@@ -82,6 +117,11 @@ template <int D> void SampleHistory<D>::commit()
         }
     }
     clearPending();
+    if (relocationDue())
+    {
+        std::vector<StatePool::Index> destination;
+        relocateInSlotOrder(destination);
+    }
 }
 
 template <int D>

@@ -112,12 +112,31 @@ void SampleHistory<D>::follow(const NeighbourList& list, const std::vector<int>&
         neighbours_[k] = global(list.indices[k]);
     }
     storeNewStates(list, body, materials, hasNew, Fr);
-    if (pool_.allocatedSinceOrdered() * relocateAfter > pool_.held())
+    if (relocationDue())
     {
         relocateInSlotOrder(remapped);
     }
     clearPending();
     current_ = true;
+}
+
+template <int D> bool SampleHistory<D>::recordsInSlotOrder() const
+{
+    bool first = true;
+    StatePool::Index last = 0;
+    for (const StatePool::Index record : slot_)
+    {
+        if (isRecord(record))
+        {
+            if (!first && record <= last)
+            {
+                return false;
+            }
+            last = record;
+            first = false;
+        }
+    }
+    return true;
 }
 
 template <int D>
