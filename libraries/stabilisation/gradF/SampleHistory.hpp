@@ -357,7 +357,10 @@ private:
     // commit()'s own.)
     void relocateInSlotOrder(std::vector<StatePool::Index>& destination);
     // Whether the records have decayed far enough from slot order to relocate them.
-    bool relocationDue() const { return pool_.allocatedSinceOrdered() * relocateAfter > pool_.held(); }
+    bool relocationDue() const
+    {
+        return pool_.allocatedSinceOrdered() * relocateAfter > pool_.held();
+    }
 
     // follow()'s new pairs that start from a state of their own, in slot order.
     void storeNewStates(const NeighbourList& list, const std::vector<int>& body,
