@@ -48,6 +48,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace sph
@@ -134,12 +135,18 @@ public:
     // count (`next`, packed, stride() numbers each): the states that differ from the committed
     // ones (compared in their compact forms, which are exact) are kept for the commit. The last
     // evaluation's are the ones committed; clearPending() before it starts. changed (if not
-    // null): HistoryOf's, 0 where next is the committed state and was not written.
+    // null): HistoryOf's, 0 where next is the committed state and was not written; a sample
+    // with a record that it marks 1 is kept without the comparison (the commit then writes its
+    // numbers, whether or not they changed).
     void keepPending(std::size_t first, std::size_t count, const double* next,
                      const std::uint8_t* changed = nullptr);
     // Whether the records lie in the order of the slots that name them (what a relocation
     // leaves; for the tests).
     bool recordsInSlotOrder() const;
+    // The record of slots first .. first + count, if every one has a record and they lie side
+    // by side in slot order (readRows() copies them a row at a time); else null. (Only where
+    // the codec's expansion is a copy. Public for the tests.)
+    const double* fromOneRun(std::size_t first, std::size_t count) const;
     // A force evaluation starts: what the last one kept is no longer the state to commit.
     void clearPending() { pending_.clear(pool_.width()); }
     // The last evaluation's pending states set aside while other evaluations come (the
@@ -248,46 +255,9 @@ public:
             }
         }
     }
-    void assign(const std::vector<std::size_t>& counts, std::vector<double> values) override
-    {
-        offsets_.assign(counts.size() + 1, 0);
-        for (std::size_t a = 0; a < counts.size(); ++a)
-        {
-            offsets_[a + 1] = offsets_[a] + counts[a];
-        }
-        const std::size_t pairs = offsets_.back();
-        if (values.size() != pairs * width())
-        {
-            throw std::logic_error("SampleHistory: " + std::to_string(values.size()) +
-                                   " numbers for " + std::to_string(pairs) + " samples");
-        }
-        pool_.reset(pool_.width());
-        neighbours_.assign(pairs, 0);
-        slot_.assign(pairs, StatePool::none);
-        weights_.resize(weighted_ ? pairs : 0);
-        for (std::size_t k = 0; k < pairs; ++k)
-        {
-            const double* in = &values[k * width()];
-            if (!(in[0] >= 0.0 && in[0] <= std::numeric_limits<int>::max() &&
-                  in[0] == std::floor(in[0])))
-            {
-                throw std::runtime_error("sampleHistory: a neighbour index " +
-                                         std::to_string(in[0]) + " that is not a particle's");
-            }
-            neighbours_[k] = static_cast<int>(in[0]);
-            if (!isInitial(in + 1))
-            {
-                slot_[k] = pool_.allocate();
-                compact(in + 1, pool_.at(slot_[k]));
-            }
-            if (weighted_)
-            {
-                weights_[k] = in[1 + stride_];
-            }
-        }
-        clearPending();
-        current_ = false;
-    }
+    // (A restart, or an exchange: the states in particle order, laid out along the list by the
+    // next follow(). Defined in SampleHistoryLayout.hpp.)
+    void assign(const std::vector<std::size_t>& counts, std::vector<double> values) override;
 
     // The longest packed state a material may have (a caller's buffer for one).
     static constexpr std::size_t maxStride = 16;
@@ -328,17 +298,35 @@ private:
             codec_->expandHistory(pool_.at(slot_[k]), out);
         }
     }
-    // keepPending() of one sample. (Out of the loop over the samples, which only looks at their
-    // flags: inlined, its addresses filled the registers.)
-    [[gnu::noinline]] void keepIfChanged(std::size_t slot, const double* next,
-                                         PendingStates::List& mine);
+    // keepPending() with records of W numbers (W = 0: pool_.width(), known at run time only):
+    // a compile-time width unrolls the compaction, comparison and copy of each state, which
+    // otherwise were a virtual call and a call of the C library's memmove per sample.
+    template <std::size_t W>
+    void keepChanged(std::size_t first, std::size_t count, const double* next,
+                     const std::uint8_t* changed, PendingStates::List& mine);
+    // f(std::integral_constant<std::size_t, W>) with W the records' width where it is one of
+    // the plastic materials' (5, 6 in 2D; 7, 8 in 3D), else W = 0.
+    template <class F> void withRecordWidth(F&& f) const;
     // How the codec's expandHistory() fills a packed state, if it only copies: component c is
     // the compact form's expandFrom_[c], or (constant) expandConstant_[c]. Learnt by expanding
     // two compact forms of distinct numbers; expandFrom_ stays empty (readRows() then calls
     // the codec) where the expansion is anything else. (readRows() copies a record's numbers
-    // straight into the rows, without a virtual call and a packed copy in between.)
+    // straight into the rows, without a virtual call and a packed copy in between.) And its
+    // inverse, if every compact number is copied somewhere: compact number k is the packed
+    // state's compactFrom_[k] (keepPending() compacts by copies, and checks that they expand
+    // back to the packed state bit for bit, as the codec's compactHistory() does:
+    // compactsExactly()).
     static constexpr std::size_t constant = maxStride;
     void learnExpansion();
+    // Whether compactFrom_'s copies of `packed` expand back to it bit for bit: the packed
+    // numbers that are not copied (a symmetric Cp⁻¹'s lower triangle, a constant) are the ones
+    // the expansion would give (learnExpansion()'s list, compactChecks_).
+    struct CompactCheck
+    {
+        std::size_t at, sameAs; // packed[at] == packed[sameAs], or with sameAs == constant,
+        double value;           // == value
+    };
+    bool compactsExactly(const double* packed) const;
 
     // The compact form of a packed state, which must unpack to it bit for bit.
     void compact(const double* state, double* out) const
@@ -384,6 +372,8 @@ private:
     std::vector<double> initialCompact_;  // and compact
     std::vector<std::size_t> expandFrom_; // learnExpansion()'s
     std::vector<double> expandConstant_;
+    std::vector<std::size_t> compactFrom_;
+    std::vector<CompactCheck> compactChecks_;
     bool current_ = false;
     StatePool pool_;
     PendingStates pending_; // keepPending()'s, for commit()

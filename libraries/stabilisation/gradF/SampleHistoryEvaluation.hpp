@@ -9,12 +9,33 @@ namespace sph
 {
 
 template <int D>
+const double* SampleHistory<D>::fromOneRun(std::size_t first, std::size_t count) const
+{
+    const StatePool::Index head = count > 0 ? slot_[first] : StatePool::none;
+    if (expandFrom_.empty() || !isRecord(head) ||
+        !isRecord(head + static_cast<StatePool::Index>(count - 1)))
+    {
+        return nullptr;
+    }
+    bool sideBySide = true;
+    for (std::size_t j = 1; j < count; ++j)
+    {
+        sideBySide &= slot_[first + j] == head + static_cast<StatePool::Index>(j);
+    }
+    return sideBySide ? pool_.run(head, count) : nullptr;
+}
+
+template <int D>
 void SampleHistory<D>::readRows(std::size_t first, std::size_t count, double* out,
                                 std::size_t rowLength) const
 {
+    // The rows past count hold the initial state; so do all of them unless each entry is
+    // written below (from one run of records).
+    const double* run = fromOneRun(first, count);
+    const std::size_t written = run ? count : 0;
     for (std::size_t c = 0; c < stride_; ++c)
     {
-        std::fill(out + c * rowLength, out + (c + 1) * rowLength, initial_[c]);
+        std::fill(out + c * rowLength + written, out + (c + 1) * rowLength, initial_[c]);
     }
     if (expandFrom_.empty())
     {
@@ -29,6 +50,29 @@ void SampleHistory<D>::readRows(std::size_t first, std::size_t count, double* ou
                 {
                     out[c * rowLength + j] = state[c];
                 }
+            }
+        }
+        return;
+    }
+    // Every sample with a record, the records side by side in slot order (a flowing particle's,
+    // once commit() or follow() relocated them): each row a strided copy of one component.
+    if (run)
+    {
+        const std::size_t width = pool_.width();
+        for (std::size_t c = 0; c < stride_; ++c)
+        {
+            double* row = out + c * rowLength;
+            if (expandFrom_[c] != constant)
+            {
+                const double* from = run + expandFrom_[c];
+                for (std::size_t j = 0; j < count; ++j)
+                {
+                    row[j] = from[j * width];
+                }
+            }
+            else
+            {
+                std::fill(row, row + count, expandConstant_[c]);
             }
         }
         return;
@@ -74,16 +118,87 @@ void SampleHistory<D>::readRows(std::size_t first, std::size_t count, double* ou
     }
 }
 
+template <int D> bool SampleHistory<D>::compactsExactly(const double* packed) const
+{
+    std::uint64_t difference = 0;
+    for (const CompactCheck& check : compactChecks_)
+    {
+        const double expected = check.sameAs == constant ? check.value : packed[check.sameAs];
+        difference |= std::bit_cast<std::uint64_t>(expected) ^
+                      std::bit_cast<std::uint64_t>(packed[check.at]);
+    }
+    return difference == 0;
+}
+
 template <int D>
 void SampleHistory<D>::keepPending(std::size_t first, std::size_t count, const double* next,
                                    const std::uint8_t* changed)
 {
     PendingStates::List& mine = pending_.mine();
+    withRecordWidth([&](auto width)
+                    { keepChanged<decltype(width)::value>(first, count, next, changed, mine); });
+}
+
+template <int D>
+template <class F>
+void SampleHistory<D>::withRecordWidth(F&& f) const
+{
+    switch (pool_.width())
+    {
+    case 5: f(std::integral_constant<std::size_t, 5>{}); break;
+    case 6: f(std::integral_constant<std::size_t, 6>{}); break;
+    case 7: f(std::integral_constant<std::size_t, 7>{}); break;
+    case 8: f(std::integral_constant<std::size_t, 8>{}); break;
+    default: f(std::integral_constant<std::size_t, 0>{}); break;
+    }
+}
+
+template <int D>
+template <std::size_t W>
+void SampleHistory<D>::keepChanged(std::size_t first, std::size_t count, const double* next,
+                                   const std::uint8_t* changed, PendingStates::List& mine)
+{
+    const std::size_t width = W > 0 ? W : pool_.width();
+    // Room for every sample's slot at once (each kept one then a push without a reallocation).
+    if (mine.slots.capacity() < mine.slots.size() + count)
+    {
+        resizePairArray(mine.slots, mine.slots.size() + count);
+        mine.slots.resize(mine.slots.size() - count);
+    }
     for (std::size_t j = 0; j < count; ++j)
     {
-        if (!changed || changed[j])
+        if (changed && !changed[j])
         {
-            keepIfChanged(first + j, next + j * stride_, mine);
+            continue;
+        }
+        const double* packed = next + j * stride_;
+        double state[W > 0 ? W : maxStride];
+        if (!compactFrom_.empty() && compactsExactly(packed))
+        {
+            for (std::size_t k = 0; k < width; ++k)
+            {
+                state[k] = packed[compactFrom_[k]];
+            }
+        }
+        else
+        {
+            compact(packed, state); // the codec's (which stops a state it cannot keep)
+        }
+        // A sample that has a record and that the material says changed (it flowed: its α
+        // grew) is kept without comparing: reading its record again here waited on the cache
+        // each time, and where the state did come out equal the commit rewrites the same
+        // numbers. A sample without one keeps none while it is in the initial state.
+        const std::size_t slot = first + j;
+        const bool kept = slot_[slot] != StatePool::none ? (changed || !sameBits(state, pool_.at(slot_[slot]), width))
+                                                         : !sameBits(state, initialCompact_.data(), width);
+        if (kept)
+        {
+            mine.slots.push_back(static_cast<std::uint32_t>(slot)); // as NeighbourList's
+            double* kept = mine.states.at(mine.states.allocate());
+            for (std::size_t k = 0; k < width; ++k)
+            {
+                kept[k] = state[k];
+            }
         }
     }
 }
@@ -106,15 +221,21 @@ template <int D> void SampleHistory<D>::commit()
     for (long t = 0; t < lists; ++t)
     {
         const PendingStates::List& p = pending_.lists()[static_cast<std::size_t>(t)];
-        for (std::size_t i = 0; i < p.slots.size(); ++i)
-        {
-            const double* state = p.states.at(static_cast<StatePool::Index>(i));
-            double* record = pool_.at(slot_[p.slots[i]]);
-            for (std::size_t k = 0; k < width; ++k)
+        withRecordWidth(
+            [&](auto fixed)
             {
-                record[k] = state[k];
-            }
-        }
+                constexpr std::size_t W = decltype(fixed)::value;
+                const std::size_t n = W > 0 ? W : width;
+                for (std::size_t i = 0; i < p.slots.size(); ++i)
+                {
+                    const double* state = p.states.at(static_cast<StatePool::Index>(i));
+                    double* record = pool_.at(slot_[p.slots[i]]);
+                    for (std::size_t k = 0; k < n; ++k)
+                    {
+                        record[k] = state[k];
+                    }
+                }
+            });
     }
     clearPending();
     if (relocationDue())
@@ -124,32 +245,11 @@ template <int D> void SampleHistory<D>::commit()
     }
 }
 
-template <int D>
-void SampleHistory<D>::keepIfChanged(std::size_t slot, const double* next,
-                                     PendingStates::List& mine)
-{
-    double state[maxStride];
-    compact(next, state);
-    const double* committed =
-        slot_[slot] == StatePool::none ? initialCompact_.data() : pool_.at(slot_[slot]);
-    // (Number by number, with an exit: `state` was just written number by number, and the
-    // vector loads of sameBits() waited for those stores.)
-    bool same = true;
-    for (std::size_t k = 0; k < pool_.width() && same; ++k)
-    {
-        same = std::bit_cast<std::uint64_t>(state[k]) == std::bit_cast<std::uint64_t>(committed[k]);
-    }
-    if (!same)
-    {
-        resizePairArray(mine.slots, mine.slots.size() + 1);
-        mine.slots.back() = static_cast<std::uint32_t>(slot); // as NeighbourList's
-        std::copy(state, state + pool_.width(), mine.states.at(mine.states.allocate()));
-    }
-}
-
 template <int D> void SampleHistory<D>::learnExpansion()
 {
     expandFrom_.clear();
+    compactFrom_.clear();
+    compactChecks_.clear();
     const std::size_t width = pool_.width();
     std::vector<double> a(width), b(width), packedA(stride_), packedB(stride_);
     for (std::size_t k = 0; k < width; ++k)
@@ -174,6 +274,32 @@ template <int D> void SampleHistory<D>::learnExpansion()
             return; // not a copy: the codec expands each record
         }
         from[c] = static_cast<std::size_t>(k);
+    }
+    // The inverse, where every compact number is copied to some component.
+    std::vector<std::size_t> compactFrom(width, constant);
+    for (std::size_t c = 0; c < stride_; ++c)
+    {
+        if (from[c] != constant && compactFrom[from[c]] == constant)
+        {
+            compactFrom[from[c]] = c;
+        }
+    }
+    compactFrom_.clear();
+    compactChecks_.clear();
+    if (std::find(compactFrom.begin(), compactFrom.end(), constant) == compactFrom.end())
+    {
+        for (std::size_t c = 0; c < stride_; ++c)
+        {
+            if (from[c] == constant)
+            {
+                compactChecks_.push_back({c, constant, packedA[c]});
+            }
+            else if (compactFrom[from[c]] != c)
+            {
+                compactChecks_.push_back({c, compactFrom[from[c]], 0.0});
+            }
+        }
+        compactFrom_ = std::move(compactFrom);
     }
     expandFrom_ = std::move(from);
     expandConstant_ = packedA;

@@ -120,6 +120,48 @@ void SampleHistory<D>::follow(const NeighbourList& list, const std::vector<int>&
     current_ = true;
 }
 
+template <int D>
+void SampleHistory<D>::assign(const std::vector<std::size_t>& counts, std::vector<double> values)
+{
+    offsets_.assign(counts.size() + 1, 0);
+    for (std::size_t a = 0; a < counts.size(); ++a)
+    {
+        offsets_[a + 1] = offsets_[a] + counts[a];
+    }
+    const std::size_t pairs = offsets_.back();
+    if (values.size() != pairs * width())
+    {
+        throw std::logic_error("SampleHistory: " + std::to_string(values.size()) +
+                               " numbers for " + std::to_string(pairs) + " samples");
+    }
+    pool_.reset(pool_.width());
+    neighbours_.assign(pairs, 0);
+    slot_.assign(pairs, StatePool::none);
+    weights_.resize(weighted_ ? pairs : 0);
+    for (std::size_t k = 0; k < pairs; ++k)
+    {
+        const double* in = &values[k * width()];
+        if (!(in[0] >= 0.0 && in[0] <= std::numeric_limits<int>::max() &&
+              in[0] == std::floor(in[0])))
+        {
+            throw std::runtime_error("sampleHistory: a neighbour index " +
+                                     std::to_string(in[0]) + " that is not a particle's");
+        }
+        neighbours_[k] = static_cast<int>(in[0]);
+        if (!isInitial(in + 1))
+        {
+            slot_[k] = pool_.allocate();
+            compact(in + 1, pool_.at(slot_[k]));
+        }
+        if (weighted_)
+        {
+            weights_[k] = in[1 + stride_];
+        }
+    }
+    clearPending();
+    current_ = false;
+}
+
 template <int D> bool SampleHistory<D>::recordsInSlotOrder() const
 {
     bool first = true;

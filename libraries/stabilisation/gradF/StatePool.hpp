@@ -78,6 +78,13 @@ public:
         return &blocks_[index / blockRecords][(index % blockRecords) * width_];
     }
 
+    // Records index .. index + n − 1, where they lie side by side (in one block): the first's
+    // address; else null.
+    const double* run(Index index, std::size_t n) const
+    {
+        return index % blockRecords + n <= blockRecords ? at(index) : nullptr;
+    }
+
     // Records held (handed out and not released).
     std::size_t held() const { return used_ - free_.size(); }
     // Indices handed out so far (held or released): 0 .. extent() − 1.

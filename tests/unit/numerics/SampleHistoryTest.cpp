@@ -8,6 +8,9 @@
 //   - the restart field (get/assign) round-trips bit for bit, in the full packed layout;
 //   - a plastic state's compact form (Cp⁻¹'s upper triangle) unpacks bit for bit, and a state
 //     whose Cp⁻¹ is not symmetric bit for bit is refused, not rounded;
+//   - keepPending() keeps a sample the material flags as changed without comparing it where it
+//     has a record (the commit rewrites the same numbers), and none where it is in the initial
+//     state;
 //   - StatePool's records keep their address and contents as it grows, released ones are reused,
 //     releaseAll() hands them out again in the same memory, and relocate() puts them in a given
 //     order in place (follow() does, once they scatter).
@@ -243,7 +246,61 @@ void compactFormIsExact()
     CHECK_FALSE(PlasticState<D>::compact(state.data(), compact.data(), false));
 }
 
+// keepPending() with the material's flags (ReturnMapPlasticity: changed = it flowed, or its
+// flow pressure changed): a flagged sample with a record is kept without comparing it, so a
+// commit of the states it already holds leaves them as they were; a flagged sample in the
+// initial state still keeps no record; a state it cannot keep exactly stops, with or without
+// the flags (the compaction by copies checks what the codec's compactHistory() does).
+template <int D>
+void changedFlagsKeepWithoutComparing()
+{
+    INFO(D << "D");
+    Samples<D> s(7);
+    std::mt19937 random(5);
+    evaluate<D>(s, 0, random);
+    s.history.commit();
+    const std::size_t stored = s.history.storedStates();
+    REQUIRE(stored > 0);
+    REQUIRE(stored < s.list.pairCount());
+    std::vector<std::vector<double>> before(s.x.size());
+    s.history.clearPending();
+    for (std::size_t a = 0; a < s.x.size(); ++a)
+    {
+        before[a] = s.read(a);
+        const std::vector<std::uint8_t> changed(s.list.count(a), 1);
+        s.history.keepPending(s.list.begin(a), s.list.count(a), before[a].data(), changed.data());
+    }
+    s.history.commit();
+    CHECK(s.history.storedStates() == stored);
+    for (std::size_t a = 0; a < s.x.size(); ++a)
+    {
+        const std::vector<double> after = s.read(a);
+        REQUIRE(sameBits(after.data(), before[a].data(), after.size()));
+    }
+    if constexpr (D > 1)
+    {
+        std::vector<double> next = s.read(0);
+        next[1] = std::nextafter(next[D], 2.0); // Cp⁻¹_01 ≠ Cp⁻¹_10 by one bit
+        const std::vector<std::uint8_t> changed(s.list.count(0), 1);
+        s.history.clearPending();
+        CHECK_THROWS_WITH(s.history.keepPending(s.list.begin(0), s.list.count(0), next.data(),
+                                                changed.data()),
+                          Catch::Contains("not symmetric"));
+        CHECK_THROWS_WITH(s.history.keepPending(s.list.begin(0), s.list.count(0), next.data()),
+                          Catch::Contains("not symmetric"));
+    }
+}
+
 } // namespace
+
+TEST_CASE("gradF samples: keepPending() with the material's changed flags leaves what it "
+          "holds, keeps no record for the initial state, stops a state it cannot keep",
+          "[samples][memory]")
+{
+    changedFlagsKeepWithoutComparing<1>();
+    changedFlagsKeepWithoutComparing<2>();
+    changedFlagsKeepWithoutComparing<3>();
+}
 
 TEST_CASE("gradF samples in the initial state keep no record and read as that state",
           "[samples][memory]")

@@ -2,7 +2,7 @@
 // material reads a component of 16 committed states with one load instead of gathering it
 // number by number). The layout must change nothing but the time:
 //   - SampleHistory::readRows() is read() transposed, each row padded with the initial state's
-//     component (with records and without, after commits);
+//     component (with records and without, after commits; a particle's records one run or not);
 //   - a material's evaluation of samples in rows gives the stresses, energies, dissipations,
 //     `changed` flags and next states of the packed evaluation, bit for bit (both models, 2D and
 //     3D, elastic and flowing points, some with a flow pressure, over counts that leave the last
@@ -31,6 +31,14 @@ void rowsAreReadTransposed()
     {
         evaluate<D>(s, round, random);
         s.history.commit();
+        // After the third round every sample has a record, relocated into slot order: each
+        // particle's are read as one run (the other path before).
+        std::size_t runs = 0;
+        for (std::size_t a = 0; a < s.x.size(); ++a)
+        {
+            runs += s.history.fromOneRun(s.list.begin(a), s.list.count(a)) ? 1 : 0;
+        }
+        CHECK(runs == (round == 2 ? s.x.size() : 0));
         for (std::size_t a = 0; a < s.x.size(); ++a)
         {
             const std::vector<double> packed = s.read(a);
