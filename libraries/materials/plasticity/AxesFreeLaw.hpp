@@ -45,16 +45,9 @@ struct AxesFreeLaw<2>
     {
         Lane<N> returnedBe[2][2], returnedZZ;
         planeLanes::exponentialOfTwice<N>(returned, returnedBe, returnedZZ);
-        for (int i = 0; i < N; ++i)
-        {
-            if (out.flow.deltaGamma[i] > 0.0)
-            {
-                const double B[2][2] = {{returnedBe[0][0][i], returnedBe[0][1][i]},
-                                        {returnedBe[1][0][i], returnedBe[1][1][i]}};
-                lanes::writeFlowingState<2, N, State>(finv, B, returnedZZ[i], out.flow, i,
-                                                      out.next);
-            }
-        }
+        lanes::writeFlowingStates<2, N, State>(
+            finv, [&](int k, int l) -> const Lane<N>& { return returnedBe[k][l]; }, returnedZZ,
+            out.flow, out.next);
     }
 };
 
@@ -90,22 +83,9 @@ struct AxesFreeLaw<3>
         constexpr int at[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
         SymmetricLanes<N> returnedBe;
         tensorLanes::exponentialOfTwice<N>(returned, returnedBe);
-        for (int i = 0; i < N; ++i)
-        {
-            if (!(out.flow.deltaGamma[i] > 0.0))
-            {
-                continue;
-            }
-            double B[3][3];
-            for (int k = 0; k < 3; ++k)
-            {
-                for (int l = 0; l < 3; ++l)
-                {
-                    B[k][l] = returnedBe[at[k][l]][i];
-                }
-            }
-            lanes::writeFlowingState<3, N, State>(finv, B, returnedBe[2][i], out.flow, i, out.next);
-        }
+        lanes::writeFlowingStates<3, N, State>(
+            finv, [&](int k, int l) -> const Lane<N>& { return returnedBe[at[k][l]]; },
+            returnedBe[2], out.flow, out.next);
     }
 };
 

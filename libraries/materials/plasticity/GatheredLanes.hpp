@@ -255,11 +255,10 @@ struct GatheredLanes
 namespace lanes
 {
 
-// The state to commit at lane i of a point that flows: Cp⁻¹ = (F⁻¹ B) F⁻ᵀ, ½ (C + Cᵀ), with B
-// the returned be (in-plane), zz = the returned be_zz (2D), α and the flow pressure of the return.
-template <int D, int N, class State>
-inline void writeFlowingState(const Lane<N> (&finv)[D][D], const double (&B)[D][D], double beZZ,
-                              const FlowLanes<N>& flow, int i, Lane<N>* next)
+// Cp⁻¹ = (F⁻¹ B) F⁻ᵀ at lane i, symmetrised: ½ (C + Cᵀ) off the diagonal.
+template <int D, int N>
+[[gnu::always_inline]] inline void pullBack(const Lane<N> (&finv)[D][D], const double (&B)[D][D],
+                                            int i, double (&out)[D][D])
 {
     double T[D][D], C[D][D];
     multiply<D>([&](int k, int m) { return finv[k][m][i]; }, [&](int m, int l) { return B[m][l]; },
@@ -270,7 +269,24 @@ inline void writeFlowingState(const Lane<N> (&finv)[D][D], const double (&B)[D][
     {
         for (int l = 0; l < D; ++l)
         {
-            next[k * D + l][i] = k == l ? C[k][k] : 0.5 * (C[k][l] + C[l][k]);
+            out[k][l] = k == l ? C[k][k] : 0.5 * (C[k][l] + C[l][k]);
+        }
+    }
+}
+
+// The state to commit at lane i of a point that flows: Cp⁻¹ = (F⁻¹ B) F⁻ᵀ, ½ (C + Cᵀ), with B
+// the returned be (in-plane), zz = the returned be_zz (2D), α and the flow pressure of the return.
+template <int D, int N, class State>
+inline void writeFlowingState(const Lane<N> (&finv)[D][D], const double (&B)[D][D], double beZZ,
+                              const FlowLanes<N>& flow, int i, Lane<N>* next)
+{
+    double C[D][D];
+    pullBack<D, N>(finv, B, i, C);
+    for (int k = 0; k < D; ++k)
+    {
+        for (int l = 0; l < D; ++l)
+        {
+            next[k * D + l][i] = C[k][l];
         }
     }
     if constexpr (D == 2)
@@ -278,6 +294,40 @@ inline void writeFlowingState(const Lane<N> (&finv)[D][D], const double (&B)[D][
         next[D * D][i] = beZZ;
     }
     next[State::packedSize - 1][i] = flow.alpha[i];
+}
+
+// writeFlowingState() of every lane that flows (deltaGamma > 0), the returned be of lane i
+// B(k, l)[i] (and beZZ[i] in 2D), the others left as they are: one loop over the lanes, which
+// vectorises (the same operations per lane as writeFlowingState()'s, so the same digits).
+template <int D, int N, class State, class Returned>
+inline void writeFlowingStates(const Lane<N> (&finv)[D][D], const Returned& B, const Lane<N>& beZZ,
+                               const FlowLanes<N>& flow, Lane<N>* next)
+{
+    for (int i = 0; i < N; ++i)
+    {
+        double b[D][D], C[D][D];
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                b[k][l] = B(k, l)[i];
+            }
+        }
+        pullBack<D, N>(finv, b, i, C);
+        const bool flows = flow.deltaGamma[i] > 0.0;
+        for (int k = 0; k < D; ++k)
+        {
+            for (int l = 0; l < D; ++l)
+            {
+                next[k * D + l][i] = flows ? C[k][l] : next[k * D + l][i];
+            }
+        }
+        if constexpr (D == 2)
+        {
+            next[D * D][i] = flows ? beZZ[i] : next[D * D][i];
+        }
+        next[State::packedSize - 1][i] = flows ? flow.alpha[i] : next[State::packedSize - 1][i];
+    }
 }
 
 } // namespace lanes
