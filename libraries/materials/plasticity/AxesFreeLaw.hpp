@@ -2,7 +2,9 @@
 // The pieces of the logarithmic law without principal axes that depend on the dimension
 // (docs/theory/plasticity.md §P12 in 3D, §P13 in 2D), one struct per dimension with the same
 // three functions, so that ReturnMapPlasticity::returnWithoutAxes is written once:
-//   strain              ε = ½ ln be, as the 6 components of a symmetric tensor; inRange[i] = 1
+//   components          how many components its strain has (StrainLanes: 4 in plane strain,
+//                       6 in 3D);
+//   strain              ε = ½ ln be, as the components of a symmetric tensor; inRange[i] = 1
 //                       where lane i's form is valid (2D: every lane; 3D: where the isochoric
 //                       part of be is within the series' range, TensorLanes.hpp);
 //   largestAbsolute     max |τᵢ| of the Kirchhoff stress, for the wave-speed bound (P2.5);
@@ -24,8 +26,9 @@ struct AxesFreeLaw;
 template <>
 struct AxesFreeLaw<2>
 {
+    static constexpr int components = 4; // the strain's (StrainLanes)
     template <int N, class Gathered>
-    static void strain(const Gathered& in, const Lane<N> (&be)[2][2], StrainLanes<N, 6>& strain,
+    static void strain(const Gathered& in, const Lane<N> (&be)[2][2], StrainLanes<N, 4>& strain,
                        Lane<N>& inRange)
     {
         planeLanes::logarithmicStrain<N>(be, in.trialZZ(), strain);
@@ -33,14 +36,14 @@ struct AxesFreeLaw<2>
     }
 
     template <int N>
-    static Lane<N> largestAbsolute(const SymmetricLanes<N>& tau)
+    static Lane<N> largestAbsolute(const Lane<N> (&tau)[4])
     {
         return planeLanes::largestAbsolutePrincipal<N>(tau);
     }
 
     // exp(2ε) in lanes (PlaneLanes.hpp), kept where a lane flows.
     template <int N, class State>
-    static void writeFlowingStates(const DeviatorLanes<N, 6>& returned, const Lane<N> (&finv)[2][2],
+    static void writeFlowingStates(const DeviatorLanes<N, 4>& returned, const Lane<N> (&finv)[2][2],
                                    LanesResult<2, N>& out)
     {
         Lane<N> returnedBe[2][2], returnedZZ;
@@ -55,6 +58,7 @@ struct AxesFreeLaw<2>
 template <>
 struct AxesFreeLaw<3>
 {
+    static constexpr int components = 6;
     template <int N, class Gathered>
     static void strain(const Gathered&, const Lane<N> (&be)[3][3], StrainLanes<N, 6>& strain,
                        Lane<N>& inRange)

@@ -3,8 +3,9 @@
 // (docs/theory/plasticity.md §P13), N points side by side: ε = ½ ln be of an in-plane 2×2 block
 // and its zz component from one polynomial, A(s) = atanh(√s)/√s, evaluated in lanes (no call to
 // the C library where its series applies), exp(2ε) back for a flowing point, and the largest
-// |principal value| of a plane-strain stress. The strain is held as §P12's six components of a
-// symmetric 3×3 (00, 11, 22, 01, 02, 12), the out-of-plane shears zero.
+// |principal value| of a plane-strain stress. The strain is held as the four components of a
+// plane strain's symmetric 3×3 (00, 11, 22, 01; its out-of-plane shears are zero, and nothing
+// is computed for them).
 
 #include "materials/plasticity/LaneFunctions.hpp"
 
@@ -25,7 +26,7 @@ using laneFunctions::seriesTerms;
 // multiply-adds, written side by side so that they overlap; each is laneFunctions::atanhSeries'
 // Horner sum.
 template <int N>
-void logarithmicStrain(const Lane<N> (&be)[2][2], const Lane<N>& beZZ, StrainLanes<N, 6>& strain)
+void logarithmicStrain(const Lane<N> (&be)[2][2], const Lane<N>& beZZ, StrainLanes<N, 4>& strain)
 {
     const Lane<N> b01 = 0.5 * (be[0][1] + be[1][0]);
     const Lane<N> m = 0.5 * (be[0][0] + be[1][1]);
@@ -82,8 +83,6 @@ void logarithmicStrain(const Lane<N> (&be)[2][2], const Lane<N>& beZZ, StrainLan
     strain.eps[1] = volume - scale * d;
     strain.eps[2] = 0.5 * lnZZ;
     strain.eps[3] = scale * b01;
-    strain.eps[4] = Lane<N>::Zero();
-    strain.eps[5] = Lane<N>::Zero();
 }
 
 // (P13.3)–(P13.4): be = exp(2ε) of N returned strains, the in-plane block B and be_zz, in
@@ -96,7 +95,7 @@ constexpr double hyperbolicRange = 1.0 / 16.0; // x ≤ 1/4: an in-plane elastic
 constexpr int hyperbolicTerms = 7;             // the terms left out below x¹⁴/14! < 5e-20
 
 template <int N>
-void exponentialOfTwice(const DeviatorLanes<N, 6>& strain, Lane<N> (&B)[2][2], Lane<N>& beZZ)
+void exponentialOfTwice(const DeviatorLanes<N, 4>& strain, Lane<N> (&B)[2][2], Lane<N>& beZZ)
 {
     using laneFunctions::inverseFactorials;
     const Lane<N> third = strain.volumetric / 3.0;
@@ -136,10 +135,10 @@ void exponentialOfTwice(const DeviatorLanes<N, 6>& strain, Lane<N> (&B)[2][2], L
     beZZ = laneFunctions::exponential<N>(2.0 * (strain.dev[2] + third));
 }
 
-// maxᵢ |τᵢ| of N plane-strain stresses held as six components: the in-plane block's principal
+// maxᵢ |τᵢ| of N plane-strain stresses held as four components: the in-plane block's principal
 // values, mean ± radius, and τ_zz.
 template <int N>
-Lane<N> largestAbsolutePrincipal(const Lane<N> (&tau)[6])
+Lane<N> largestAbsolutePrincipal(const Lane<N> (&tau)[4])
 {
     Lane<N> result;
     for (int i = 0; i < N; ++i)

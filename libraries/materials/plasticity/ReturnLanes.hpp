@@ -24,14 +24,16 @@ template <int N>
 using Lane = Eigen::Array<double, N, 1>;
 
 // The logarithmic strains of N points, C components each: C = 3 their principal values, C = 6
-// the symmetric tensor (00, 11, 22, 01, 02, 12; TensorLanes.hpp), whose off-diagonal
+// the symmetric tensor (00, 11, 22, 01, 02, 12; TensorLanes.hpp), C = 4 a plane strain's
+// (00, 11, 22, 01: it has no out-of-plane shears; PlaneLanes.hpp), whose off-diagonal
 // components count twice in a norm. The models' returns and elastic laws are written for any C:
 // they act on the volumetric part and scale the deviatoric one, which needs no principal axes.
 // eps[k][i] is point i's k-th component.
 template <int N, int C = 3>
 struct StrainLanes
 {
-    static_assert(C == 3 || C == 6, "principal values (3) or a symmetric tensor (6)");
+    static_assert(C == 3 || C == 4 || C == 6,
+                  "principal values (3), a plane strain (4) or a symmetric tensor (6)");
     Lane<N> eps[C];
 
     Eigen::Vector3d point(int i) const
@@ -166,6 +168,10 @@ struct DeviatorLanes
         if constexpr (C == 3)
         {
             return diagonal;
+        }
+        else if constexpr (C == 4)
+        {
+            return diagonal + 2.0 * (dev[3][i] * dev[3][i]);
         }
         else
         {

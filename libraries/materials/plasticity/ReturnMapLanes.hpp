@@ -72,23 +72,24 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
                                                       Lane<N>& inRange) const
 {
     using Law = AxesFreeLaw<D>;
-    StrainLanes<N, 6> strain;
+    constexpr int C = Law::components;
+    StrainLanes<N, C> strain;
     Law::template strain<N>(in, be, strain, inRange);
 
-    const DeviatorLanes<N, 6> trial(strain);
-    const bool changed = returnOrTrial<N, 6>(strain, trial, in.alpha(), in.flowPressure(), flow,
+    const DeviatorLanes<N, C> trial(strain);
+    const bool changed = returnOrTrial<N, C>(strain, trial, in.alpha(), in.flowPressure(), flow,
                                              out.flow);
 
     // τ, P = τ F⁻ᵀ, W and the wave modulus M + max |τᵢ| (P2.5), from the returned strain's
     // parts: the trial's where no lane's strain changed (the same numbers from the same strain).
-    DeviatorLanes<N, 6> flowed; // (no std::optional: it would clear the lanes first)
+    DeviatorLanes<N, C> flowed; // (no std::optional: it would clear the lanes first)
     if (changed)
     {
         flowed.split(strain);
     }
-    const DeviatorLanes<N, 6>& returned = changed ? flowed : trial;
-    SymmetricLanes<N> tau;
-    kirchhoffLanes<N, 6>(returned, tau);
+    const DeviatorLanes<N, C>& returned = changed ? flowed : trial;
+    Lane<N> tau[C];
+    kirchhoffLanes<N, C>(returned, tau);
     constexpr int at[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
     lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return tau[at[k][m]]; },
                                [&](int m, int l) -> const Lane<N>& { return finv[l][m]; }, out.P);
@@ -96,11 +97,11 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
     if (wanted.waveModulus)
     {
         out.waveModulus = Law::template largestAbsolute<N>(tau);
-        out.waveModulus += waveModulusLanes<N, 6>(returned);
+        out.waveModulus += waveModulusLanes<N, C>(returned);
     }
     if (wanted.energy)
     {
-        out.energy = elasticEnergyLanes<N, 6>(returned);
+        out.energy = elasticEnergyLanes<N, C>(returned);
         addExtraEnergy<N>(in.alpha(), out);
     }
     if (!wanted.next)
