@@ -134,6 +134,22 @@ struct GatheredLanes
     // F of the first `count` lanes, I in the others.
     void gatherF(const Mat<D>* F, std::size_t count)
     {
+        if (count == static_cast<std::size_t>(N))
+        {
+            // A whole block (most of them): the same copies with compile-time bounds, which
+            // vectorise as a transposition.
+            for (int i = 0; i < N; ++i)
+            {
+                for (int k = 0; k < D; ++k)
+                {
+                    for (int l = 0; l < D; ++l)
+                    {
+                        f[k][l][i] = F[i](k, l);
+                    }
+                }
+            }
+            return;
+        }
         for (int k = 0; k < D; ++k)
         {
             for (int l = 0; l < D; ++l)
