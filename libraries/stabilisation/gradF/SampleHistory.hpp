@@ -10,8 +10,8 @@
 // nothing; the others keep their state in a pool (StatePool), in the material's compact form
 // (Material::compactHistory: Cp⁻¹ is symmetric), slot k naming its record. An evaluation reads
 // a particle's states unpacked (read()) and hands back the states a commit would make of them
-// (keepPending()): only those that differ from the committed ones are kept, and the commit
-// writes them in place. When the list changes (the updated-Lagrangian reference is rebuilt,
+// (keepPending()): only those that differ from the committed ones, or that the material says
+// changed (it flowed), are kept, and the commit writes them in place. When the list changes (the updated-Lagrangian reference is rebuilt,
 // or a distributed run's local particles change), follow() moves each state to the pair's new
 // slot by the neighbour's global index; a pair that is new starts from its owner's committed
 // particle state (= its own sample a–a).
