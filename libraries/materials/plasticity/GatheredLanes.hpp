@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include <type_traits>
+
 namespace sph
 {
 
@@ -134,11 +136,9 @@ struct GatheredLanes
     // F of the first `count` lanes, I in the others.
     void gatherF(const Mat<D>* F, std::size_t count)
     {
-        if (count == static_cast<std::size_t>(N))
+        const auto copy = [&](auto lanes)
         {
-            // A whole block (most of them): the same copies with compile-time bounds, which
-            // vectorise as a transposition.
-            for (int i = 0; i < N; ++i)
+            for (std::size_t i = 0; i < static_cast<std::size_t>(lanes); ++i)
             {
                 for (int k = 0; k < D; ++k)
                 {
@@ -148,6 +148,12 @@ struct GatheredLanes
                     }
                 }
             }
+        };
+        if (count == static_cast<std::size_t>(N))
+        {
+            // A whole block (most of them): compile-time bounds, which the compiler
+            // vectorises as a transposition.
+            copy(std::integral_constant<std::size_t, N>{});
             return;
         }
         for (int k = 0; k < D; ++k)
@@ -157,16 +163,7 @@ struct GatheredLanes
                 f[k][l] = Lane<N>::Constant(k == l ? 1.0 : 0.0);
             }
         }
-        for (std::size_t i = 0; i < count; ++i)
-        {
-            for (int k = 0; k < D; ++k)
-            {
-                for (int l = 0; l < D; ++l)
-                {
-                    f[k][l][i] = F[i](k, l);
-                }
-            }
-        }
+        copy(count);
     }
     const Lane<N>& alpha() const { return committed[alphaAt]; }
     // The states to commit before any flow is written in: the committed ones, with the flow

@@ -11,10 +11,10 @@
 // (Material::compactHistory: Cp⁻¹ is symmetric), slot k naming its record. An evaluation reads
 // a particle's states unpacked (read()) and hands back the states a commit would make of them
 // (keepPending()): only those that differ from the committed ones, or that the material says
-// changed (it flowed), are kept, and the commit writes them in place. When the list changes (the updated-Lagrangian reference is rebuilt,
-// or a distributed run's local particles change), follow() moves each state to the pair's new
-// slot by the neighbour's global index; a pair that is new starts from its owner's committed
-// particle state (= its own sample a–a).
+// changed (it flowed), are kept, and the commit writes them in place. When the list changes
+// (the updated-Lagrangian reference is rebuilt, or a distributed run's local particles change),
+// follow() moves each state to the pair's new slot by the neighbour's global index; a pair
+// that is new starts from its owner's committed particle state (= its own sample a–a).
 //
 // follow() and its helpers are defined in SampleHistoryLayout.hpp, what an evaluation reads and
 // hands back (readRows(), keepPending(), commit()) in SampleHistoryEvaluation.hpp, both

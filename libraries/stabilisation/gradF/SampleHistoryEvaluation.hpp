@@ -159,11 +159,12 @@ void SampleHistory<D>::keepChanged(std::size_t first, std::size_t count, const d
                                    const std::uint8_t* changed, PendingStates::List& mine)
 {
     const std::size_t width = W > 0 ? W : pool_.width();
-    // Room for every sample's slot at once (each kept one then a push without a reallocation).
-    if (mine.slots.capacity() < mine.slots.size() + count)
+    // Room for every sample's slot at once (each kept one then a push without a reallocation;
+    // grown by 1/16 beyond, as resizePairArray() grows a pair array).
+    const std::size_t room = mine.slots.size() + count;
+    if (mine.slots.capacity() < room)
     {
-        resizePairArray(mine.slots, mine.slots.size() + count);
-        mine.slots.resize(mine.slots.size() - count);
+        mine.slots.reserve(room + room / 16);
     }
     for (std::size_t j = 0; j < count; ++j)
     {
@@ -189,15 +190,16 @@ void SampleHistory<D>::keepChanged(std::size_t first, std::size_t count, const d
         // each time, and where the state did come out equal the commit rewrites the same
         // numbers. A sample without one keeps none while it is in the initial state.
         const std::size_t slot = first + j;
-        const bool kept = slot_[slot] != StatePool::none ? (changed || !sameBits(state, pool_.at(slot_[slot]), width))
-                                                         : !sameBits(state, initialCompact_.data(), width);
-        if (kept)
+        const bool keep = slot_[slot] != StatePool::none
+                              ? changed || !sameBits(state, pool_.at(slot_[slot]), width)
+                              : !sameBits(state, initialCompact_.data(), width);
+        if (keep)
         {
             mine.slots.push_back(static_cast<std::uint32_t>(slot)); // as NeighbourList's
-            double* kept = mine.states.at(mine.states.allocate());
+            double* pending = mine.states.at(mine.states.allocate());
             for (std::size_t k = 0; k < width; ++k)
             {
-                kept[k] = state[k];
+                pending[k] = state[k];
             }
         }
     }
