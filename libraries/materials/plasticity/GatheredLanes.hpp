@@ -55,7 +55,7 @@ template <int D, class A, class B>
     }
 }
 
-// out = Σₘ a(k, m) b(m, l) lane by lane, D×D, a and b returning lanes.
+// out = Σₘ a(k, m) b(m, l) lane by lane, D×D, a and b returning lanes (or maps of them).
 template <int N, int D, class A, class B>
 inline void multiplyLanes(const A& a, const B& b, Lane<N> (&out)[D][D])
 {
@@ -65,8 +65,8 @@ inline void multiplyLanes(const A& a, const B& b, Lane<N> (&out)[D][D])
         {
             for (int i = 0; i < N; ++i)
             {
-                out[k][l][i] = dotAt<D>([&](int m) -> const Lane<N>& { return a(k, m); },
-                                        [&](int m) -> const Lane<N>& { return b(m, l); }, i);
+                out[k][l][i] = dotAt<D>([&](int m) -> decltype(auto) { return a(k, m); },
+                                        [&](int m) -> decltype(auto) { return b(m, l); }, i);
             }
         }
     }
@@ -96,7 +96,9 @@ inline void assemble(const Lane<N> (&vectors)[D][D], int i, const Eigen::Vector3
 // a packed state holds them, zz in 2D, the flow pressure and α). Unused lanes hold the virgin
 // state at F = I, where every branch is finite. The states packed one after another (stride
 // apart), or in rows (componentStride apart, HistoryOf::samplesInRows: N entries of each row
-// readable, those past `count` the initial state's), read a row at a time.
+// readable, those past `count` the initial state's), read where they are: only α, the flow
+// pressure and zz, which the returns take as lanes, are copied (copying every row cost 2-3 % of
+// a return in lanes, docs/performance.md).
 template <int D, int N, class State>
 struct GatheredLanes
 {
@@ -104,35 +106,51 @@ struct GatheredLanes
     static constexpr int alphaAt = State::packedSize - 1; // α's
     static constexpr int pressureAt = State::flowPressureAt;
     Lane<N> f[D][D];
-    Lane<N> committed[State::packedSize];
 
     GatheredLanes(const Mat<D>* F, const double* states, std::size_t stride, std::size_t count,
                   std::size_t componentStride = 1)
     {
+        gatherF(F, count);
         if (componentStride != 1)
         {
             for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
             {
-                committed[c] = Eigen::Map<const Lane<N>>(states + c * componentStride);
+                row_[c] = states + c * componentStride;
             }
-            gatherF(F, count);
-            return;
         }
-        gatherF(F, count);
-        for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
-        {
-            const bool unit =
-                c != alphaAt && c != pressureAt && (c == zz || (c < zz && c / D == c % D));
-            committed[c] = Lane<N>::Constant(c == pressureAt ? noFlowPressure : unit ? 1.0 : 0.0);
-        }
-        for (std::size_t i = 0; i < count; ++i)
+        else
         {
             for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
             {
-                committed[c][i] = states[i * stride + c];
+                const bool unit =
+                    c != alphaAt && c != pressureAt && (c == zz || (c < zz && c / D == c % D));
+                packed_[c] = Lane<N>::Constant(c == pressureAt ? noFlowPressure : unit ? 1.0 : 0.0);
+            }
+            for (std::size_t i = 0; i < count; ++i)
+            {
+                for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
+                {
+                    packed_[c][i] = states[i * stride + c];
+                }
+            }
+            for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
+            {
+                row_[c] = packed_[c].data();
             }
         }
+        alpha_ = committed(alphaAt);
+        flowPressure_ = committed(pressureAt);
+        if constexpr (D == 2)
+        {
+            zz_ = committed(zz);
+        }
     }
+    // (It points into its own storage.)
+    GatheredLanes(const GatheredLanes&) = delete;
+    GatheredLanes& operator=(const GatheredLanes&) = delete;
+
+    // Component c of the N committed states.
+    Eigen::Map<const Lane<N>> committed(int c) const { return Eigen::Map<const Lane<N>>(row_[c]); }
     // F of the first `count` lanes, I in the others.
     void gatherF(const Mat<D>* F, std::size_t count)
     {
@@ -165,7 +183,7 @@ struct GatheredLanes
         }
         copy(count);
     }
-    const Lane<N>& alpha() const { return committed[alphaAt]; }
+    const Lane<N>& alpha() const { return alpha_; }
     // The states to commit before any flow is written in: the committed ones, with the flow
     // pressure of the return (noFlowPressure where the point does not flow).
     template <class Result> void keepCommitted(Result& out) const
@@ -174,14 +192,14 @@ struct GatheredLanes
         {
             for (int c = 0; c < static_cast<int>(State::packedSize); ++c)
             {
-                out.next[c][i] = committed[c][i];
+                out.next[c][i] = row_[c][i];
             }
             out.next[pressureAt][i] = out.flow.pressure[i];
         }
     }
-    const Lane<N>& flowPressure() const { return committed[pressureAt]; }
+    const Lane<N>& flowPressure() const { return flowPressure_; }
     // be_zz in 2D (Cp⁻¹_zz: F has no zz part).
-    const Lane<N>& trialZZ() const { return committed[D == 2 ? zz : alphaAt]; }
+    const Lane<N>& trialZZ() const { return D == 2 ? zz_ : alpha_; }
 
     // be = (F Cp⁻¹) Fᵀ, the trial's elastic left Cauchy–Green tensor (in-plane in 2D). (Each
     // loop over the lanes vectorises.)
@@ -189,8 +207,7 @@ struct GatheredLanes
     {
         Lane<N> t[D][D];
         lanes::multiplyLanes<N, D>([&](int k, int m) -> const Lane<N>& { return f[k][m]; },
-                                   [&](int m, int l) -> const Lane<N>& { return committed[m * D + l]; },
-                                   t);
+                                   [&](int m, int l) { return committed(m * D + l); }, t);
         if constexpr (D == 3)
         {
             // be is symmetric: its upper triangle, mirrored.
@@ -263,6 +280,11 @@ struct GatheredLanes
             }
         }
     }
+
+private:
+    const double* row_[State::packedSize]; // component c's N lanes
+    Lane<N> packed_[State::packedSize];    // the rows of packed states
+    Lane<N> alpha_, flowPressure_, zz_;
 };
 
 namespace lanes
