@@ -254,8 +254,11 @@ struct GatheredLanes
         else
         {
             Lane<N> cof[3][3];
+            // (Unrolled: with the indices known, no modulo is computed at run time.)
+#pragma GCC unroll 3
             for (int k = 0; k < 3; ++k)
             {
+#pragma GCC unroll 3
                 for (int l = 0; l < 3; ++l)
                 {
                     const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
