@@ -108,8 +108,9 @@ void ReturnMapPlasticity<D, Model>::returnWithoutAxes(const GatheredLanes<D, N, 
     {
         return;
     }
-    in.keepCommitted(out);
-    if (countLanes<N>([&](int i) { return out.flow.deltaGamma[i] > 0.0; }) == 0)
+    const bool someFlow = countLanes<N>([&](int i) { return out.flow.deltaGamma[i] > 0.0; }) > 0;
+    in.keepCommitted(out, someFlow);
+    if (!someFlow)
     {
         return; // nothing flows: every state stays (each lane's result is its own either way)
     }
@@ -182,7 +183,7 @@ void ReturnMapPlasticity<D, Model>::returnInAxes(const GatheredLanes<D, N, State
 
     // The states to commit: where the point flows the returned be pulled back (§P4 step 4),
     // elsewhere the committed state.
-    in.keepCommitted(out);
+    in.keepCommitted(out, true);
     for (int i = 0; i < N; ++i)
     {
         if (!(out.flow.deltaGamma[i] > 0.0))
