@@ -59,8 +59,12 @@ template <int D, class A, class B>
 template <int N, int D, class A, class B>
 inline void multiplyLanes(const A& a, const B& b, Lane<N> (&out)[D][D])
 {
+    // (Unrolled: the compiler left the 3D loops rolled, computing each operand's place at run
+    // time.)
+#pragma GCC unroll 3
     for (int k = 0; k < D; ++k)
     {
+#pragma GCC unroll 3
         for (int l = 0; l < D; ++l)
         {
             for (int i = 0; i < N; ++i)
@@ -226,8 +230,10 @@ struct GatheredLanes
         if constexpr (D == 3)
         {
             // be is symmetric: its upper triangle, mirrored.
+#pragma GCC unroll 3
             for (int k = 0; k < D; ++k)
             {
+#pragma GCC unroll 3
                 for (int l = k; l < D; ++l)
                 {
                     const auto row = [&](int m) -> const Lane<N>& { return t[k][m]; };
