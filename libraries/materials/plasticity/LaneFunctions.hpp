@@ -83,7 +83,7 @@ constexpr double expRange = 0.125;
 constexpr int expDegree = 10;
 
 template <int N>
-inline Lane<N> exponential(const Lane<N>& y)
+[[gnu::always_inline]] inline Lane<N> exponential(const Lane<N>& y)
 {
     Lane<N> sum = Lane<N>::Constant(inverseFactorials[expDegree]);
 #pragma GCC unroll 16

@@ -59,7 +59,7 @@ struct PolynomialLanes
     Lane<N> alpha, beta, gamma;
     Lane<N> I1, I2, I3; // a's invariants
 
-    explicit PolynomialLanes(const SymmetricLanes<N>& a)
+    [[gnu::always_inline]] explicit PolynomialLanes(const SymmetricLanes<N>& a)
         : alpha(Lane<N>::Zero()), beta(Lane<N>::Zero()), gamma(Lane<N>::Zero())
     {
         I1 = a[0] + a[1] + a[2];
