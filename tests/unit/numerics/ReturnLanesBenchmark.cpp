@@ -1,0 +1,103 @@
+// A benchmark, not a test (hidden from the suite: the tag starts with a dot): the cost of a
+// plastic material's return in lanes per gradF stress sample, in the layout gradF hands it
+// (each particle's committed states in rows, padded to whole blocks of 16, a particle's 29
+// samples in 2D and 57 in 3D, the next states packed, the changed flags), for elastic points
+// (virgin, and with a plastic history) and for a mix where most flow. Used to measure the
+// changes of issue 30 (docs/performance.md, "The return in lanes: fewer instructions around
+// the arithmetic"); the time of a whole run is tests/benchmarks/run's.
+//   numericsTests "[.returnLanesBenchmark]"
+// prints the fastest of five rounds in ns per sample. The machine's speed changes by a third
+// from minute to minute: compare two builds only in alternating runs.
+#include "numerics/PlasticPoints.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+using namespace sph;
+using namespace sph::test;
+
+namespace
+{
+
+template <int D>
+void timeReturns(const char* label, const std::string& material, double amplitude, bool virgin,
+                 std::size_t perParticle)
+{
+    constexpr std::size_t stride = PlasticState<D>::packedSize;
+    const std::size_t particles = 4096 / perParticle;
+    const std::size_t count = particles * perParticle;
+    RandomPoints<D> points(Mat<D>::Identity(), amplitude, count, 7, false);
+    if (virgin)
+    {
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            PlasticState<D>{}.pack(&points.states[i * stride]);
+        }
+    }
+    Body<D> body(material, points);
+    // The rows as gradF's SampleHistory::readRows writes them.
+    const std::size_t rowLength =
+        (perParticle + HistoryOf::rowBlock - 1) / HistoryOf::rowBlock * HistoryOf::rowBlock;
+    double initial[stride];
+    PlasticState<D>{}.pack(initial);
+    std::vector<double> rows(particles * rowLength * stride);
+    for (std::size_t a = 0; a < particles; ++a)
+    {
+        for (std::size_t c = 0; c < stride; ++c)
+        {
+            for (std::size_t j = 0; j < rowLength; ++j)
+            {
+                rows[(a * stride + c) * rowLength + j] =
+                    j < perParticle ? points.states[(a * perParticle + j) * stride + c] : initial[c];
+            }
+        }
+    }
+    std::vector<Mat<D>> P(count);
+    std::vector<double> next(count * stride), dissipation(count);
+    std::vector<std::uint8_t> changed(count);
+    const int repeats = 400;
+    double fastest = 1e300;
+    for (int round = 0; round < 5; ++round)
+    {
+        const auto start = std::chrono::steady_clock::now();
+        for (int r = 0; r < repeats; ++r)
+        {
+            for (std::size_t a = 0; a < particles; ++a)
+            {
+                const std::size_t first = a * perParticle;
+                body.material->evaluate(
+                    points.F.data() + first, P.data() + first, nullptr, perParticle,
+                    HistoryOf::samplesInRows(&rows[a * stride * rowLength], rowLength, stride,
+                                             &next[first * stride], &dissipation[first],
+                                             &changed[first]));
+            }
+        }
+        const std::chrono::duration<double, std::nano> took = std::chrono::steady_clock::now() - start;
+        fastest = std::min(fastest, took.count() / (repeats * static_cast<double>(count)));
+    }
+    std::size_t flowing = 0;
+    bool finite = true;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        flowing += dissipation[i] > 0.0 ? 1 : 0;
+        finite = finite && P[i].allFinite();
+    }
+    std::printf("%-34s %6.2f ns/sample (%zu of %zu samples flow)\n", label, fastest, flowing, count);
+    REQUIRE(finite);
+}
+
+} // namespace
+
+TEST_CASE("the return in lanes per stress sample, 2D and 3D", "[.returnLanesBenchmark]")
+{
+    using plasticMaterials::copper;
+    timeReturns<2>("j2Plasticity 2D, elastic, virgin", copper, 0.001, true, 29);
+    timeReturns<2>("j2Plasticity 2D, elastic", copper, 0.001, false, 29);
+    timeReturns<2>("j2Plasticity 2D, most flow", copper, 0.006, false, 29);
+    timeReturns<2>("druckerPrager 2D", plasticMaterials::dp, 0.001, false, 29);
+    timeReturns<3>("j2Plasticity 3D, elastic, virgin", copper, 0.001, true, 57);
+    timeReturns<3>("j2Plasticity 3D, elastic", copper, 0.001, false, 57);
+    timeReturns<3>("j2Plasticity 3D, most flow", copper, 0.006, false, 57);
+    timeReturns<3>("druckerPrager 3D, virgin", plasticMaterials::dp, 0.0003, true, 57);
+}
