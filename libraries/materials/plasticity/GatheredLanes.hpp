@@ -128,7 +128,8 @@ struct GatheredLanes
             {
                 const bool unit =
                     c != alphaAt && c != pressureAt && (c == zz || (c < zz && c / D == c % D));
-                packed_[c] = Lane<N>::Constant(c == pressureAt ? noFlowPressure : unit ? 1.0 : 0.0);
+                packed_[c] =
+                    Lane<N>::Constant(c == pressureAt ? noFlowPressure : unit ? 1.0 : 0.0);
             }
             for (std::size_t i = 0; i < count; ++i)
             {
@@ -154,7 +155,10 @@ struct GatheredLanes
     GatheredLanes& operator=(const GatheredLanes&) = delete;
 
     // Component c of the N committed states.
-    Eigen::Map<const Lane<N>> committed(int c) const { return Eigen::Map<const Lane<N>>(row_[c]); }
+    Eigen::Map<const Lane<N>> committed(int c) const
+    {
+        return Eigen::Map<const Lane<N>>(row_[c]);
+    }
     // F of the first `count` lanes, I in the others.
     void gatherF(const Mat<D>* F, std::size_t count)
     {

@@ -48,8 +48,9 @@ void timeReturns(const char* label, const std::string& material, double amplitud
         {
             for (std::size_t j = 0; j < rowLength; ++j)
             {
+                const std::size_t sample = a * perParticle + j;
                 rows[(a * stride + c) * rowLength + j] =
-                    j < perParticle ? points.states[(a * perParticle + j) * stride + c] : initial[c];
+                    j < perParticle ? points.states[sample * stride + c] : initial[c];
             }
         }
     }
@@ -73,7 +74,8 @@ void timeReturns(const char* label, const std::string& material, double amplitud
                                              &changed[first]));
             }
         }
-        const std::chrono::duration<double, std::nano> took = std::chrono::steady_clock::now() - start;
+        const std::chrono::duration<double, std::nano> took =
+            std::chrono::steady_clock::now() - start;
         fastest = std::min(fastest, took.count() / (repeats * static_cast<double>(count)));
     }
     std::size_t flowing = 0;
@@ -83,7 +85,8 @@ void timeReturns(const char* label, const std::string& material, double amplitud
         flowing += dissipation[i] > 0.0 ? 1 : 0;
         finite = finite && P[i].allFinite();
     }
-    std::printf("%-34s %6.2f ns/sample (%zu of %zu samples flow)\n", label, fastest, flowing, count);
+    std::printf("%-34s %6.2f ns/sample (%zu of %zu samples flow)\n", label, fastest, flowing,
+                count);
     REQUIRE(finite);
 }
 
