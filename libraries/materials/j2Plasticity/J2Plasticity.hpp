@@ -25,6 +25,8 @@
 #include "materials/plasticity/ReturnMapPlasticity.hpp"
 #include "materials/plasticity/ReturnLanes.hpp"
 
+#include <type_traits>
+
 namespace sph
 {
 
@@ -90,16 +92,30 @@ bool J2Plasticity<D>::returnLanes(StrainLanes<N, C>& eps, const DeviatorLanes<N,
     // The return at every lane, in loops that each vectorise (one loop doing it all per lane
     // did not: three scalar divisions a lane, where most lanes of a yielding body flow).
     Lane<N> deltaGamma, shearScale, third;
-    for (int i = 0; i < N; ++i)
+    const auto radialReturn = [&](auto softening)
     {
-        const double qTrial = qTrials[i];
-        const double hardened = (qTrial - sigmaY0_ - H_ * alpha[i]) / (3.0 * mu + H_);
-        // Softening exhausted: σy = 0, s = 0.
-        const double returned =
-            sigmaY0_ + H_ * (alpha[i] + hardened) < 0.0 ? qTrial / (3.0 * mu) : hardened;
-        shearScale[i] = 1.0 - 3.0 * mu * returned / qTrial;
-        deltaGamma[i] = qTrial > yield[i] ? returned : 0.0;
-        third[i] = trial.volumetric[i] / 3.0;
+        for (int i = 0; i < N; ++i)
+        {
+            const double qTrial = qTrials[i];
+            const double hardened = (qTrial - sigmaY0_ - H_ * alpha[i]) / (3.0 * mu + H_);
+            // Softening exhausted: σy = 0, s = 0. (Only where H < 0: with H ≥ 0 a lane that
+            // flows has σy0 + H (α + Δγ) ≥ σy0 > 0, and a lane that does not keeps its strain
+            // whatever it returned; so without softening the division is not computed.)
+            const double returned =
+                softening && sigmaY0_ + H_ * (alpha[i] + hardened) < 0.0 ? qTrial / (3.0 * mu)
+                                                                          : hardened;
+            shearScale[i] = 1.0 - 3.0 * mu * returned / qTrial;
+            deltaGamma[i] = qTrial > yield[i] ? returned : 0.0;
+            third[i] = trial.volumetric[i] / 3.0;
+        }
+    };
+    if (H_ < 0.0)
+    {
+        radialReturn(std::true_type{});
+    }
+    else
+    {
+        radialReturn(std::false_type{});
     }
     for (int k = 0; k < C; ++k)
     {
