@@ -373,6 +373,7 @@ private:
     std::vector<std::size_t> expandFrom_; // learnExpansion()'s
     std::vector<double> expandConstant_;
     std::vector<std::size_t> compactFrom_;
+    std::vector<std::size_t> identity_;   // 0, 1, ..., the records' width - 1
     std::vector<CompactCheck> compactChecks_;
     bool current_ = false;
     StatePool pool_;

@@ -166,6 +166,15 @@ void SampleHistory<D>::keepChanged(std::size_t first, std::size_t count, const d
     {
         mine.slots.reserve(room + room / 16);
     }
+    // Compact number k of a packed state is its compactFrom_[k] (where the codec's compaction
+    // is a copy): compared and kept straight from the packed state. (A compact copy built
+    // first, with vector stores, and read back number by number stalled on each read.)
+    std::size_t from[W > 0 ? W : maxStride];
+    const bool byCopies = !compactFrom_.empty();
+    for (std::size_t k = 0; byCopies && k < width; ++k)
+    {
+        from[k] = compactFrom_[k];
+    }
     for (std::size_t j = 0; j < count; ++j)
     {
         if (changed && !changed[j])
@@ -173,33 +182,40 @@ void SampleHistory<D>::keepChanged(std::size_t first, std::size_t count, const d
             continue;
         }
         const double* packed = next + j * stride_;
-        double state[W > 0 ? W : maxStride];
-        if (!compactFrom_.empty() && compactsExactly(packed))
+        double compacted[W > 0 ? W : maxStride];
+        const double* source = packed;
+        const std::size_t* at = from;
+        if (!(byCopies && compactsExactly(packed)))
         {
-            for (std::size_t k = 0; k < width; ++k)
-            {
-                state[k] = packed[compactFrom_[k]];
-            }
-        }
-        else
-        {
-            compact(packed, state); // the codec's (which stops a state it cannot keep)
+            compact(packed, compacted); // the codec's (which stops a state it cannot keep)
+            source = compacted;
+            at = identity_.data();
         }
         // A sample that has a record and that the material says changed (it flowed: its α
         // grew) is kept without comparing: reading its record again here waited on the cache
         // each time, and where the state did come out equal the commit rewrites the same
         // numbers. A sample without one keeps none while it is in the initial state.
         const std::size_t slot = first + j;
-        const bool keep = slot_[slot] != StatePool::none
-                              ? changed || !sameBits(state, pool_.at(slot_[slot]), width)
-                              : !sameBits(state, initialCompact_.data(), width);
+        const bool record = slot_[slot] != StatePool::none;
+        bool keep = record && changed;
+        if (!keep)
+        {
+            const double* committed = record ? pool_.at(slot_[slot]) : initialCompact_.data();
+            std::uint64_t difference = 0;
+            for (std::size_t k = 0; k < width; ++k)
+            {
+                difference |= std::bit_cast<std::uint64_t>(source[at[k]]) ^
+                              std::bit_cast<std::uint64_t>(committed[k]);
+            }
+            keep = difference != 0;
+        }
         if (keep)
         {
             mine.slots.push_back(static_cast<std::uint32_t>(slot)); // as NeighbourList's
             double* pending = mine.states.at(mine.states.allocate());
             for (std::size_t k = 0; k < width; ++k)
             {
-                pending[k] = state[k];
+                pending[k] = source[at[k]];
             }
         }
     }
@@ -249,6 +265,11 @@ template <int D> void SampleHistory<D>::commit()
 
 template <int D> void SampleHistory<D>::learnExpansion()
 {
+    identity_.resize(pool_.width());
+    for (std::size_t k = 0; k < identity_.size(); ++k)
+    {
+        identity_[k] = k;
+    }
     expandFrom_.clear();
     compactFrom_.clear();
     compactChecks_.clear();
