@@ -57,7 +57,14 @@ template <int D, int N> struct LanesResult
                 }
             }
         }
-        std::copy(block, block + count, out);
+        if (count == static_cast<std::size_t>(N))
+        {
+            std::copy(block, block + N, out); // (a length known at compile time: no memmove)
+        }
+        else
+        {
+            std::copy(block, block + count, out);
+        }
     }
     PlasticFlow flowAt(int i) const
     {

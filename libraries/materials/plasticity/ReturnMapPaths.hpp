@@ -123,18 +123,30 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
         returnInLanes<lanes>(F, history.states + history.at(first, 0), history.stride, count, true,
                              {wantNext, false, psi != nullptr}, out, history.componentStride);
         // Lane by lane into P, psi and the flags, each in a loop of its own (they vectorise;
-        // one loop writing all of them per lane did not).
+        // one loop writing all of them per lane did not). A whole block's copies have a length
+        // known at compile time, and are moves in place (a length known only at run time made
+        // each a call of the C library's memmove: 1.7 % of a yielding 2D step).
+        const auto copyLanes = [count](const auto* from, auto* to)
+        {
+            if (count == static_cast<std::size_t>(lanes))
+            {
+                std::copy(from, from + lanes, to);
+            }
+            else
+            {
+                std::copy(from, from + count, to);
+            }
+        };
         out.storeStresses(P, count);
         if (psi)
         {
-            std::copy(out.energy.data(), out.energy.data() + count, psi);
+            copyLanes(out.energy.data(), psi);
         }
         if (!wantNext)
         {
             return;
         }
-        std::copy(out.flow.dissipation.data(), out.flow.dissipation.data() + count,
-                  history.dissipation + first);
+        copyLanes(out.flow.dissipation.data(), history.dissipation + first);
         // A lane that does not flow keeps the committed state but for the flow pressure the
         // return gave it (keepCommitted): the committed state, bit for bit, where that is the
         // committed pressure. Only the others are written and compared.
@@ -152,7 +164,7 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
         }
         if (history.changed)
         {
-            std::copy(changed, changed + count, history.changed + first);
+            copyLanes(changed, history.changed + first);
         }
         for (std::size_t lane = 0; lane < count; ++lane)
         {
