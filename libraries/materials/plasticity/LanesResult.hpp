@@ -57,13 +57,19 @@ template <int D, int N> struct LanesResult
                 }
             }
         }
+        // (Copies of a length known at compile time, no call of memmove: a whole block's, or
+        // over all the lanes writing those below count.)
         if (count == static_cast<std::size_t>(N))
         {
-            std::copy(block, block + N, out); // (a length known at compile time: no memmove)
+            std::copy(block, block + N, out);
+            return;
         }
-        else
+        for (std::size_t i = 0; i < static_cast<std::size_t>(N); ++i)
         {
-            std::copy(block, block + count, out);
+            if (i < count)
+            {
+                out[i] = block[i];
+            }
         }
     }
     PlasticFlow flowAt(int i) const
