@@ -57,20 +57,7 @@ template <int D, int N> struct LanesResult
                 }
             }
         }
-        // (Copies of a length known at compile time, no call of memmove: a whole block's, or
-        // over all the lanes writing those below count.)
-        if (count == static_cast<std::size_t>(N))
-        {
-            std::copy(block, block + N, out);
-            return;
-        }
-        for (std::size_t i = 0; i < static_cast<std::size_t>(N); ++i)
-        {
-            if (i < count)
-            {
-                out[i] = block[i];
-            }
-        }
+        copyFirst<N>(block, out, count);
     }
     PlasticFlow flowAt(int i) const
     {

@@ -15,7 +15,9 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace sph
 {
@@ -108,6 +110,26 @@ template <int N>
 [[gnu::always_inline]] inline Lane<N> multiplyAdd(const Lane<N>& a, const Lane<N>& b, double c)
 {
     return multiplyAdd<N>(a, b, Lane<N>::Constant(c));
+}
+
+// to[0 .. count) = from[0 .. count) for count ≤ N, by copies of a length known at compile
+// time: a whole block's, or over all N lanes writing those below count. (A copy of a length
+// known only at run time was a call of the C library's memmove, 1.7 % of a yielding 2D step.)
+template <int N, class T>
+[[gnu::always_inline]] inline void copyFirst(const T* from, T* to, std::size_t count)
+{
+    if (count == static_cast<std::size_t>(N))
+    {
+        std::copy(from, from + N, to);
+        return;
+    }
+    for (std::size_t i = 0; i < static_cast<std::size_t>(N); ++i)
+    {
+        if (i < count)
+        {
+            to[i] = from[i];
+        }
+    }
 }
 
 // Whether component k of a strain's C is on the diagonal (a principal value is).

@@ -123,25 +123,9 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
         returnInLanes<lanes>(F, history.states + history.at(first, 0), history.stride, count, true,
                              {wantNext, false, psi != nullptr}, out, history.componentStride);
         // Lane by lane into P, psi and the flags, each in a loop of its own (they vectorise;
-        // one loop writing all of them per lane did not). Copies of a length known at compile
-        // time: a whole block's, or the last block's over all the lanes, writing those below
-        // count (a copy of a length known only at run time was a call of the C library's
-        // memmove: 1.7 % of a yielding 2D step).
+        // one loop writing all of them per lane did not).
         const auto copyLanes = [count](const auto* from, auto* to)
-        {
-            if (count == static_cast<std::size_t>(lanes))
-            {
-                std::copy(from, from + lanes, to);
-                return;
-            }
-            for (std::size_t i = 0; i < static_cast<std::size_t>(lanes); ++i)
-            {
-                if (i < count)
-                {
-                    to[i] = from[i];
-                }
-            }
-        };
+        { copyFirst<static_cast<int>(lanes)>(from, to, count); };
         out.storeStresses(P, count);
         if (psi)
         {
