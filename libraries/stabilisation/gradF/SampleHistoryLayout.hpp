@@ -146,7 +146,11 @@ void SampleHistory<D>::follow(const NeighbourList& list, const std::vector<int>&
     // The records of the pairs that left (kept ones are marked `moved`), in slot order.
     for (std::size_t a = 0; a < n; ++a)
     {
-        for (std::size_t old = offsets_[a]; hasLeaving[a] && old < offsets_[a + 1]; ++old)
+        if (!hasLeaving[a])
+        {
+            continue;
+        }
+        for (std::size_t old = offsets_[a]; old < offsets_[a + 1]; ++old)
         {
             if (isRecord(slot_[old]))
             {

@@ -140,8 +140,17 @@ void followKeepsAndStartsStates()
     s.relist(moved);
     std::size_t kept = 0;
     std::size_t added = 0;
+    // Both kinds of particle: those whose neighbours did not change (follow() keeps their
+    // slots by copies) and those whose list changed (the merge by global index).
+    std::size_t sameList = 0;
     for (std::size_t a = 0; a < s.x.size(); ++a)
     {
+        bool same = s.list.count(a) == old[a].size();
+        for (std::size_t j = 0; same && j < s.list.count(a); ++j)
+        {
+            same = old[a].count(s.list.indices[s.list.begin(a) + j]) == 1;
+        }
+        sameList += same ? 1 : 0;
         std::vector<double> own(s.stride);
         s.material->packHistory(a, own.data());
         const std::vector<double> states = s.read(a);
@@ -163,6 +172,8 @@ void followKeepsAndStartsStates()
     }
     CHECK(kept > 0);
     CHECK(added > 0);
+    CHECK(sameList > 0);
+    CHECK(sameList < s.x.size());
     // The records of the pairs that left were released (and reused).
     CHECK(s.history.storedStates() == countNotInitial(s));
 }
