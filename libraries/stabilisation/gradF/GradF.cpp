@@ -78,6 +78,7 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
             Y_[a] = Y;
         }
     }
+    prepareMomentPoints(ref);
     if (singular < 0)
     {
         return {};
@@ -141,8 +142,8 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 }
                 out.F[a] = kin.F;
                 // Stresses at F_b(a) = F_a + G_a x^r_ba (or F̄_b(a)) for every neighbour b
-                // (incl. a).
-                const std::size_t count = list.count(a);
+                // (incl. a), or at the moment points F_a + G_a ξ_q.
+                const std::size_t count = useSamplePoints(a, list.count(a), scratch);
                 const bool bar = particleVolume_ && material.hasHistory();
                 const bool framed = this->framed(material);
                 if (framed)
@@ -321,7 +322,7 @@ double GradF<D>::energy(const ForceInput<D>& in)
             const Material<D>& material = *in.materials[static_cast<std::size_t>(in.body[a])];
             const Kinematics kin = kinematics(a, in.x, ref, false, scratch);
             double sum = 0.0;
-            const std::size_t count = list.count(a);
+            const std::size_t count = useSamplePoints(a, list.count(a), scratch);
             const bool framed = this->framed(material);
             if (framed)
             {

@@ -1,0 +1,78 @@
+// gradF's stress samples at moment points (`samplePoints moments`,
+// docs/theory/gradF-moments.md): each particle's points from its reference neighbourhood, and
+// the refusal of what they cannot carry (§M4). Where the samples are used is GradF.cpp.
+#include "core/InputError.hpp"
+#include "particles/Parallel.hpp"
+#include "stabilisation/gradF/GradF.hpp"
+
+namespace sph
+{
+
+// The offsets x^r_ba and weights Ŵ_ab as kinematics() makes them (j = 0 the particle itself).
+template <int D>
+void GradF<D>::prepareMomentPoints(const ReferenceConfiguration<D>& ref)
+{
+    constexpr std::size_t count = MomentPoints<D>::count;
+    const NeighbourList& list = ref.neighbours;
+    const std::size_t n = ref.size();
+    momentPoints_.resize(momentSamples_ ? n * count : 0);
+    momentWeights_.resize(momentSamples_ ? n * count : 0);
+    if (!momentSamples_)
+    {
+        return;
+    }
+#pragma omp parallel if (useThreads(n))
+    {
+        std::vector<Vec<D>> xr(maxNeighbours_);
+        std::vector<double> w(maxNeighbours_);
+#pragma omp for schedule(static)
+        for (std::size_t a = 0; a < n; ++a)
+        {
+            const std::size_t first = list.begin(a);
+            const std::size_t neighbours = list.count(a);
+            const double* W = ref.kernelValues(a).W; // W[k - first] for slot k
+            for (std::size_t j = 0; j < neighbours; ++j)
+            {
+                const std::size_t b = list.indices[first + j];
+                xr[j] = j == 0 ? Vec<D>::Zero() : Vec<D>(ref.x[b] - ref.x[a]);
+                w[j] = W[j] * ref.V[b] * invDenominator_[a];
+            }
+            if (!momentPoints<D>(xr.data(), w.data(), neighbours, &momentPoints_[a * count],
+                                 &momentWeights_[a * count]))
+            {
+                momentWeights_[a * count] = -1.0; // keeps its neighbour samples (§M2)
+            }
+        }
+    }
+}
+
+template <int D>
+void GradF<D>::refuseMovingMomentHistory(const std::vector<const Material<D>*>& materials) const
+{
+    if (!momentSamples_ || !referenceMoves_)
+    {
+        return;
+    }
+    for (const Material<D>* material : materials)
+    {
+        if (material && material->hasHistory())
+        {
+            throw InputError(samplePointsWhere_,
+                             "samplePoints moments with formulation updatedLagrangian and a "
+                             "material with plastic history: each reference move makes new "
+                             "points, and carrying a point's history to them is not derived "
+                             "(docs/theory/gradF-moments.md §M4)",
+                             {"hint: use formulation totalLagrangian with samplePoints moments, "
+                              "or remove samplePoints (neighbours, the default)"});
+        }
+    }
+}
+
+template void GradF<1>::prepareMomentPoints(const ReferenceConfiguration<1>&);
+template void GradF<2>::prepareMomentPoints(const ReferenceConfiguration<2>&);
+template void GradF<3>::prepareMomentPoints(const ReferenceConfiguration<3>&);
+template void GradF<1>::refuseMovingMomentHistory(const std::vector<const Material<1>*>&) const;
+template void GradF<2>::refuseMovingMomentHistory(const std::vector<const Material<2>*>&) const;
+template void GradF<3>::refuseMovingMomentHistory(const std::vector<const Material<3>*>&) const;
+
+} // namespace sph
