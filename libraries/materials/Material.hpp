@@ -47,9 +47,10 @@ namespace sph
 // written; 1 where it may differ (next written).
 // The committed states' layouts: packed one after another (samples: component c of state i at
 // i * stride + c), or in rows (samplesInRows, 2D and 3D only: component c of state i at
-// c * rowLength + i, rowLength a multiple of rowBlock and each row's entries past the last
-// state the initial state's component), so that a material reads rowBlock states' component
-// with one load. The next states are packed either way, nextStride apart.
+// c * rowLength + i, rowLength a multiple of rowBlock — or rowBlock / 2 for at most that many
+// states, which a material then reads in rowBlock / 2 lanes — and each row's entries past the
+// last state the initial state's component), so that a material reads rowBlock states'
+// component with one load. The next states are packed either way, nextStride apart.
 struct HistoryOf
 {
     std::size_t first = 0;

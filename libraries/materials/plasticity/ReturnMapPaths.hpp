@@ -26,7 +26,19 @@ void ReturnMapPlasticity<D, Model>::evaluate(const Mat<D>* F, Mat<D>* P, double*
             {
                 // (The states from i on are addressed through `history` and i: a copy of it per
                 // block, changed number by number and read back whole, waited on its stores.)
-                evaluateSamplesInLanes(F + i, P + i, psi ? psi + i : nullptr, count, history, i);
+                // A block of at most half the lanes (gradF's moment points, 5 in 2D and 7 in
+                // 3D; a neighbour list's last block) in half as many: a lane's result does not
+                // depend on the width (ReturnLanes.hpp).
+                if (count <= lanes / 2)
+                {
+                    evaluateSamplesInLanes<lanes / 2>(F + i, P + i, psi ? psi + i : nullptr, count,
+                                                      history, i);
+                }
+                else
+                {
+                    evaluateSamplesInLanes<lanes>(F + i, P + i, psi ? psi + i : nullptr, count,
+                                                  history, i);
+                }
                 i += count;
                 continue;
             }
@@ -110,6 +122,7 @@ void ReturnMapPlasticity<D, Model>::evaluateParticlesInLanes(const Mat<D>* F, Ma
 }
 
 template <int D, class Model>
+template <std::size_t N>
 void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<D>* P, double* psi,
                                                            std::size_t count,
                                                            const HistoryOf& history,
@@ -118,14 +131,14 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
     if constexpr (D >= 2)
     {
         const bool wantNext = history.next != nullptr;
-        LanesResult<lanes> out;
+        LanesResult<N> out;
         // A sample's wave modulus is never read (the time step takes the particles').
-        returnInLanes<lanes>(F, history.states + history.at(first, 0), history.stride, count, true,
-                             {wantNext, false, psi != nullptr}, out, history.componentStride);
+        returnInLanes<N>(F, history.states + history.at(first, 0), history.stride, count, true,
+                         {wantNext, false, psi != nullptr}, out, history.componentStride);
         // Lane by lane into P, psi and the flags, each in a loop of its own (they vectorise;
         // one loop writing all of them per lane did not).
         const auto copyLanes = [count](const auto* from, auto* to)
-        { copyFirst<static_cast<int>(lanes)>(from, to, count); };
+        { copyFirst<static_cast<int>(N)>(from, to, count); };
         out.storeStresses(P, count);
         if (psi)
         {
@@ -139,7 +152,7 @@ void ReturnMapPlasticity<D, Model>::evaluateSamplesInLanes(const Mat<D>* F, Mat<
         // A lane that does not flow keeps the committed state but for the flow pressure the
         // return gave it (keepCommitted): the committed state, bit for bit, where that is the
         // committed pressure. Only the others are written and compared.
-        std::uint8_t changed[lanes];
+        std::uint8_t changed[N];
         for (std::size_t lane = 0; lane < count; ++lane)
         {
             const double committedPressure =

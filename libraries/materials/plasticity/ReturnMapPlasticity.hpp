@@ -246,6 +246,7 @@ private:
     // already offset, history's states from its first).
     void evaluateParticlesInLanes(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t count,
                                   std::size_t firstParticle) const;
+    template <std::size_t N>
     void evaluateSamplesInLanes(const Mat<D>* F, Mat<D>* P, double* psi, std::size_t count,
                                 const HistoryOf& history, std::size_t first) const;
     // Two AVX-512 registers of doubles per quantity: the return is chains of divisions and

@@ -68,10 +68,15 @@ HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
     if (material.readsStatesInRows())
     {
         // In rows (the material reads each component of 16 samples at once), padded to whole
-        // blocks of them with the initial state. (The buffers only grow: resizing them down
-        // and up again, particle by particle, cleared the new part each time.)
+        // blocks of them with the initial state; at most half a block (the moment points) in
+        // a half row, which the material reads in half as many lanes. (The buffers only grow:
+        // resizing them down and up again, particle by particle, cleared the new part each
+        // time.)
+        constexpr std::size_t halfBlock = HistoryOf::rowBlock / 2;
         const std::size_t rowLength =
-            (count + HistoryOf::rowBlock - 1) / HistoryOf::rowBlock * HistoryOf::rowBlock;
+            count <= halfBlock
+                ? halfBlock
+                : (count + HistoryOf::rowBlock - 1) / HistoryOf::rowBlock * HistoryOf::rowBlock;
         const auto atLeast = [](auto& buffer, std::size_t size)
         {
             if (buffer.size() < size)

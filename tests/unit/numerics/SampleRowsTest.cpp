@@ -6,7 +6,9 @@
 //   - a material's evaluation of samples in rows gives the stresses, energies, dissipations,
 //     `changed` flags and next states of the packed evaluation, bit for bit (both models, 2D and
 //     3D, elastic and flowing points, some with a flow pressure, over counts that leave the last
-//     block of 16 partly empty).
+//     block of 16 partly empty);
+//   - at most half a block (gradF's moment points) is evaluated in 8 lanes, packed or in a half
+//     row, with the results of the same points in a whole block of 16, bit for bit.
 #include "numerics/PlasticPoints.hpp"
 #include "numerics/SampleHistorySupport.hpp"
 
@@ -97,7 +99,90 @@ std::size_t samplesInRowsAsPacked(const std::string& materialText, const Mat<D>&
     return flowing;
 }
 
+// At most half a block of samples (gradF's moment points) is evaluated in half as many lanes,
+// packed or in a half row: each point's results are those of the same point in a whole block
+// of 16, bit for bit (a lane does not depend on the width). Returns how many of them flow.
+template <int D>
+std::size_t halfBlockAsWhole(const std::string& materialText, const Mat<D>& centre,
+                             double amplitude, std::size_t count, unsigned seed)
+{
+    constexpr std::size_t stride = PlasticState<D>::packedSize;
+    constexpr std::size_t whole = HistoryOf::rowBlock;
+    REQUIRE(count <= whole / 2);
+    test::RandomPoints<D> points(centre, amplitude, whole, seed, false);
+    std::vector<double> initial(stride);
+    PlasticState<D>{}.pack(initial.data());
+    test::Body<D> body(materialText, points);
+    struct Results
+    {
+        std::vector<Mat<D>> P;
+        std::vector<double> psi, dissipation, next;
+        std::vector<std::uint8_t> changed;
+        explicit Results(std::size_t n)
+            : P(n), psi(n), dissipation(n), next(n * stride, -7.25), changed(n, 2)
+        {
+        }
+    };
+    Results all(whole), packed(count), rows(count);
+    body.material->evaluate(points.F.data(), all.P.data(), all.psi.data(), whole,
+                            HistoryOf::samples(points.states.data(), stride, all.next.data(),
+                                               all.dissipation.data(), all.changed.data()));
+    body.material->evaluate(points.F.data(), packed.P.data(), packed.psi.data(), count,
+                            HistoryOf::samples(points.states.data(), stride, packed.next.data(),
+                                               packed.dissipation.data(), packed.changed.data()));
+    const std::vector<double> firstStates(points.states.begin(),
+                                          points.states.begin() + static_cast<long>(count * stride));
+    const std::vector<double> halfRows = test::samples::inRows(firstStates, stride, whole / 2, initial);
+    body.material->evaluate(points.F.data(), rows.P.data(), rows.psi.data(), count,
+                            HistoryOf::samplesInRows(halfRows.data(), whole / 2, stride,
+                                                     rows.next.data(), rows.dissipation.data(),
+                                                     rows.changed.data()));
+    std::size_t flowing = 0;
+    for (const Results* r : {&packed, &rows})
+    {
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            INFO("point " << i << " of " << count << (r == &rows ? ", in rows" : ", packed"));
+            CHECK(test::sameBits(r->P[i], all.P[i]));
+            CHECK(test::sameBits(r->psi[i], all.psi[i]));
+            CHECK(test::sameBits(r->dissipation[i], all.dissipation[i]));
+            REQUIRE(r->changed[i] == all.changed[i]);
+            for (std::size_t c = 0; c < stride; ++c)
+            {
+                CHECK(test::sameBits(r->next[i * stride + c], all.next[i * stride + c]));
+            }
+        }
+    }
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        flowing += all.dissipation[i] > 0.0 ? 1 : 0;
+    }
+    return flowing;
+}
+
 } // namespace
+
+TEST_CASE("plastic samples: half a block in half the lanes gives a whole block's results, bit "
+          "for bit",
+          "[plasticity][lanes]")
+{
+    const std::string dp = "type druckerPrager; E 7.2e6; nu 0.2; rho 2000; frictionAngle 30; "
+                           "dilatancyAngle 10; cohesion 1e4;";
+    const std::string hardening = "type j2Plasticity; E 200e9; nu 0.3; rho 7800; yieldStress 2e8; "
+                                  "hardeningModulus 1e9;";
+    const Mat<2> identity = Mat<2>::Identity();
+    const Mat<3> identity3 = Mat<3>::Identity();
+    std::size_t flowing = 0;
+    for (unsigned seed = 1; seed <= 4; ++seed)
+    {
+        flowing += halfBlockAsWhole<2>(dp, identity, 0.01, 5, seed);
+        flowing += halfBlockAsWhole<3>(dp, identity3, 0.0015, 7, seed);
+        flowing += halfBlockAsWhole<2>(hardening, identity, 0.0008, 5, seed);
+        flowing += halfBlockAsWhole<3>(hardening, identity3, 0.0008, 8, seed);
+    }
+    CHECK(flowing > 8); // flowing points among them, and elastic ones:
+    CHECK(flowing < 4 * (5 + 7 + 5 + 8));
+}
 
 TEST_CASE("gradF samples in rows: read() transposed and padded, bit for bit", "[samples][lanes]")
 {
