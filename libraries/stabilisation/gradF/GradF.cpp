@@ -4,6 +4,7 @@
 #include "stabilisation/gradF/RegularisedInverse.hpp"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 namespace sph
@@ -117,6 +118,22 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
     {
         Scratch scratch;
         scratch.resize(maxNeighbours_);
+        ParticleStart started;
+        // The other members of a group (sampleGroup) on the heap, and only with moment points:
+        // the thread's stack frame stays what it was without them.
+        std::unique_ptr<SampleGroupScratch> group;
+        Scratch* members[maxSampleGroup] = {&scratch};
+        ParticleStart* starts[maxSampleGroup] = {&started};
+        if (momentSamples_)
+        {
+            group = std::make_unique<SampleGroupScratch>();
+            for (std::size_t k = 1; k < maxSampleGroup; ++k)
+            {
+                group->members[k - 1].resize(maxNeighbours_);
+                members[k] = &group->members[k - 1];
+                starts[k] = &group->starts[k - 1];
+            }
+        }
         // Chunks handed out as threads come free: a flowing region costs several times a
         // resting one (returns, rebases), and a static split left a thread idle ~10 % of the
         // step on the column collapse. Every result is per chunk or per particle (the tallies
@@ -127,7 +144,10 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
             const ParticleChunk& chunk = chunks[i];
             const Material<D>& material = *in.materials[chunk.body];
             ChunkTally& tally = tallies[i];
-            for (std::size_t a = chunk.begin; a < chunk.end; ++a)
+            // Each particle in two halves around the evaluation of its samples; particles whose
+            // moment points share one block of lanes (sampleGroup) are evaluated together, each
+            // otherwise as alone (theory gradF-moments.md §M5).
+            const auto start = [&](std::size_t a, Scratch& scratch, ParticleStart& st)
             {
                 Kinematics kin = kinematics(a, in.x, ref, in.atReference, scratch);
                 double J;
@@ -141,11 +161,15 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                     kin.G = Tensor3<D>::zero();
                 }
                 out.F[a] = kin.F;
+                st.F = kin.F;
                 // Stresses at F_b(a) = F_a + G_a x^r_ba (or F̄_b(a)) for every neighbour b
                 // (incl. a), or at the moment points F_a + G_a ξ_q.
                 const std::size_t count = useSamplePoints(a, list.count(a), scratch);
+                st.count = count;
                 const bool bar = particleVolume_ && material.hasHistory();
+                st.bar = bar;
                 const bool framed = this->framed(material);
+                st.framed = framed;
                 if (framed)
                 {
                     fillFramedSamples(a, in.x, list, kin, scratch);
@@ -164,11 +188,18 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 }
                 const bool weighted = samples_.weighted() && material.hasHistory();
                 const bool choose = weighted && weightsDue_;
-                evaluateSamples(a, material, list, count,
-                                wantEnergy || choose ? scratch.psi.data() : nullptr, scratch, true);
+                st.weighted = weighted;
+                st.wantPsi = wantEnergy || choose;
+            };
+            const auto finish = [&](std::size_t a, Scratch& scratch, const ParticleStart& st)
+            {
+                const std::size_t count = st.count;
+                const bool bar = st.bar;
+                const bool framed = st.framed;
+                const bool weighted = st.weighted;
                 if (weighted)
                 {
-                    useEnergyWeights(a, material, list, kin.F, true, scratch);
+                    useEnergyWeights(a, material, list, st.F, true, scratch);
                 }
                 if (material.hasHistory() && !linearised_)
                 {
@@ -205,7 +236,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 }
                 if (bar)
                 {
-                    S.noalias() += pressure * kin.F.inverse().transpose();
+                    S.noalias() += pressure * st.F.inverse().transpose();
                 }
                 // A = S F^r^T + Q:K,  B[k] = Q[k] F^r^T,  C = B~ Z^{-1},  Ã = A - C Y
                 const Mat<D> FrT = ref.F[a].transpose();
@@ -237,13 +268,36 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 {
                     jointForceTerms(a, in.V0[a], A, B); // (G17.3)
                     selfTerm_[a] += frameSelfTerm;
-                    continue;
+                    return;
                 }
                 const MatDM C = contractMonomials<D, MatDM>(B) * Zinv_[a];
                 const Mat<D> Atilde = A - C * Y_[a];
                 UL_[a] = in.V0[a] * Atilde * ref.gradient.L[a];
                 Cw_[a] = (in.V0[a] * invDenominator_[a]) * C;
                 selfTerm_[a] = in.V0[a] * (C * s_[a]) + frameSelfTerm;
+            };
+            const bool grouping = groupsSamples(material);
+            for (std::size_t a = chunk.begin; a < chunk.end;)
+            {
+                const std::size_t size = grouping ? sampleGroup(a, chunk.end) : 1;
+                for (std::size_t k = 0; k < size; ++k)
+                {
+                    start(a + k, *members[k], *starts[k]);
+                }
+                if (size == 1)
+                {
+                    evaluateSamples(a, material, list, started.count,
+                                    started.wantPsi ? scratch.psi.data() : nullptr, scratch, true);
+                }
+                else
+                {
+                    evaluateSampleGroup(a, size, material, list, started.wantPsi, members, *group);
+                }
+                for (std::size_t k = 0; k < size; ++k)
+                {
+                    finish(a + k, *members[k], *starts[k]);
+                }
+                a += size;
             }
         }
         // T_c = -V^r_c Σ_{a≠c} [UL_a d_ac + W_ca Cw_a z_ac] - UL_c e_c + V0_c C_c s_c

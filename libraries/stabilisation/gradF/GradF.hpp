@@ -138,6 +138,10 @@ public:
         return updated ? "formulation totalLagrangian" : "";
     }
 
+    // Whether particles' moment points are evaluated in groups (sampleGroup; on by default;
+    // public for the test that grouping changes no digit).
+    void groupSampleEvaluations(bool on) { groupSamples_ = on; }
+
     // Kinematics of particle a at positions x: f_a, F_a = f_a F^r_a and G_a (public for tests).
     struct Kinematics
     {
@@ -304,6 +308,62 @@ private:
     void prepareMomentPoints(const ReferenceConfiguration<D>& ref);
     // §M4: a move would have to carry a moment point's history to the new points.
     void refuseMovingMomentHistory(const std::vector<const Material<D>*>& materials) const;
+    // What a force evaluation's first half of a particle hands its second (computeForces).
+    struct ParticleStart
+    {
+        Mat<D> F;              // F_a
+        std::size_t count = 0; // its samples
+        bool bar = false;      // sampleVolume particle on its body
+        bool framed = false;
+        bool weighted = false; // moveWeights' energy weights
+        bool wantPsi = false;  // the samples' energies
+    };
+    // Up to this many particles' moment points side by side in one block of lanes (3 in 2D, 2
+    // in 3D), which a plastic material returns together: five or seven points alone filled a
+    // block of eight or sixteen lanes and a row of states each.
+    static constexpr std::size_t maxSampleGroup =
+        std::max<std::size_t>(1, HistoryOf::rowBlock / MomentPoints<D>::count);
+    bool groupSamples_ = true;
+    // Whether a body of this material evaluates its particles' moment points in groups: a
+    // material with plastic history in rows, its samples neither linearised, framed nor
+    // weighted.
+    bool groupsSamples(const Material<D>& material) const
+    {
+        return momentSamples_ && groupSamples_ && maxSampleGroup > 1 && material.hasHistory() &&
+               !linearised_ && !frames_.active() && !samples_.weighted() &&
+               material.readsStatesInRows();
+    }
+    // How many particles from a (below end, one chunk's body, whose material groupsSamples())
+    // are evaluated together: those with moment points, at most maxSampleGroup (at least 1).
+    std::size_t sampleGroup(std::size_t a, std::size_t end) const
+    {
+        constexpr std::size_t count = MomentPoints<D>::count;
+        std::size_t group = 0;
+        while (group < maxSampleGroup && a + group < end &&
+               momentWeights_[(a + group) * count] >= 0.0)
+        {
+            ++group;
+        }
+        return std::max<std::size_t>(group, 1);
+    }
+    struct SampleGroupScratch
+    {
+        Scratch members[maxSampleGroup - 1]; // the group's members after the first
+        ParticleStart starts[maxSampleGroup - 1];
+        Mat<D> F[HistoryOf::rowBlock];
+        Mat<D> P[HistoryOf::rowBlock];
+        double psi[HistoryOf::rowBlock];
+        double dissipation[HistoryOf::rowBlock];
+        std::uint8_t changed[HistoryOf::rowBlock];
+        std::vector<double> states; // in rows
+        std::vector<double> next;   // packed
+    };
+    // evaluateSamples() of the particles a .. a + group - 1 (sampleGroup's) in one call of the
+    // material: their samples side by side, each particle's slice back into its scratch and its
+    // pending states kept in particle order, as evaluating them one by one does, bit for bit.
+    void evaluateSampleGroup(std::size_t a, std::size_t group, const Material<D>& material,
+                             const NeighbourList& list, bool psi, Scratch* const* members,
+                             SampleGroupScratch& g);
     // Particle a's sample offsets and weights into scratch.xr and scratch.w (after
     // kinematics(), which filled them with the neighbours'): its moment points, or (without
     // them) the neighbours left as they are. Returns how many samples there are.

@@ -4,6 +4,7 @@
 // The rest of the scheme, for every material, is GradF.cpp.
 #include "stabilisation/gradF/GradF.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace sph
@@ -46,6 +47,51 @@ void GradF<D>::evaluateSamples(std::size_t a, const Material<D>& material, const
         if (psi)
         {
             psi[j] += c.dW + (c.dP.array() * dF.array()).sum();
+        }
+    }
+}
+
+template <int D>
+void GradF<D>::evaluateSampleGroup(std::size_t a, std::size_t group, const Material<D>& material,
+                                   const NeighbourList& list, bool psi,
+                                   Scratch* const* members, SampleGroupScratch& g)
+{
+    constexpr std::size_t count = MomentPoints<D>::count;
+    const std::size_t total = group * count;
+    const std::size_t stride = samples_.stride();
+    // A half row for at most half a block, as historyAround() (the material's lanes follow).
+    const std::size_t rowLength =
+        total <= HistoryOf::rowBlock / 2 ? HistoryOf::rowBlock / 2 : HistoryOf::rowBlock;
+    if (g.states.size() < rowLength * stride)
+    {
+        g.states.resize(rowLength * stride);
+    }
+    if (g.next.size() < total * stride)
+    {
+        g.next.resize(total * stride);
+    }
+    for (std::size_t k = 0; k < group; ++k)
+    {
+        const std::size_t offset = k * count;
+        std::copy(members[k]->F.begin(), members[k]->F.begin() + count, g.F + offset);
+        samples_.readRows(list.begin(a + k), count, g.states.data() + offset, rowLength,
+                          rowLength - offset);
+    }
+    material.evaluate(g.F, g.P, psi ? g.psi : nullptr, total,
+                      HistoryOf::samplesInRows(g.states.data(), rowLength, stride, g.next.data(),
+                                               g.dissipation, g.changed));
+    for (std::size_t k = 0; k < group; ++k)
+    {
+        const std::size_t offset = k * count;
+        samples_.keepPending(list.begin(a + k), count, g.next.data() + offset * stride,
+                             g.changed + offset);
+        Scratch& member = *members[k];
+        std::copy(g.P + offset, g.P + offset + count, member.P.begin());
+        std::copy(g.dissipation + offset, g.dissipation + offset + count,
+                  member.dissipation.begin());
+        if (psi)
+        {
+            std::copy(g.psi + offset, g.psi + offset + count, member.psi.begin());
         }
     }
 }
@@ -146,15 +192,24 @@ template void GradF<1>::evaluateSamples(std::size_t, const Material<1>&, const N
 template HistoryOf GradF<1>::historyAround(std::size_t, const Material<1>&, const NeighbourList&,
                                           Scratch&, bool);
 template double GradF<1>::commitHistory(const HistoryCommit<1>&);
+template void GradF<1>::evaluateSampleGroup(std::size_t, std::size_t, const Material<1>&,
+                                             const NeighbourList&, bool, Scratch* const*,
+                                             SampleGroupScratch&);
 template void GradF<2>::evaluateSamples(std::size_t, const Material<2>&, const NeighbourList&,
                                          std::size_t, double*, Scratch&, bool);
 template HistoryOf GradF<2>::historyAround(std::size_t, const Material<2>&, const NeighbourList&,
                                           Scratch&, bool);
 template double GradF<2>::commitHistory(const HistoryCommit<2>&);
+template void GradF<2>::evaluateSampleGroup(std::size_t, std::size_t, const Material<2>&,
+                                             const NeighbourList&, bool, Scratch* const*,
+                                             SampleGroupScratch&);
 template void GradF<3>::evaluateSamples(std::size_t, const Material<3>&, const NeighbourList&,
                                          std::size_t, double*, Scratch&, bool);
 template HistoryOf GradF<3>::historyAround(std::size_t, const Material<3>&, const NeighbourList&,
                                           Scratch&, bool);
 template double GradF<3>::commitHistory(const HistoryCommit<3>&);
+template void GradF<3>::evaluateSampleGroup(std::size_t, std::size_t, const Material<3>&,
+                                             const NeighbourList&, bool, Scratch* const*,
+                                             SampleGroupScratch&);
 
 } // namespace sph

@@ -128,9 +128,17 @@ public:
         }
     }
     // The same in rows (HistoryOf::samplesInRows): component c of slot first + j at
-    // out[c * rowLength + j], rowLength ≥ count; the entries past count hold the initial state.
-    // (Most samples have no record: their rows are the initial state's, written a row at a time.)
-    void readRows(std::size_t first, std::size_t count, double* out, std::size_t rowLength) const;
+    // out[c * rowLength + j], rowLength ≥ count; the entries past count, up to padTo (≤
+    // rowLength; all of the row by default), hold the initial state. (Most samples have no
+    // record: their rows are the initial state's, written a row at a time.) Several particles'
+    // samples side by side in one set of rows: each read at its offset in the rows (out + offset)
+    // with padTo = rowLength - offset, in the order of the offsets.
+    void readRows(std::size_t first, std::size_t count, double* out, std::size_t rowLength) const
+    {
+        readRows(first, count, out, rowLength, rowLength);
+    }
+    void readRows(std::size_t first, std::size_t count, double* out, std::size_t rowLength,
+                  std::size_t padTo) const;
     // What an evaluation found a commit would make of the states of slots first .. first +
     // count (`next`, packed, stride() numbers each): the states that differ from the committed
     // ones (compared in their compact forms, which are exact) are kept for the commit. The last

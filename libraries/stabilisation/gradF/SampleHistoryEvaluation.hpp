@@ -27,7 +27,7 @@ const double* SampleHistory<D>::fromOneRun(std::size_t first, std::size_t count)
 
 template <int D>
 void SampleHistory<D>::readRows(std::size_t first, std::size_t count, double* out,
-                                std::size_t rowLength) const
+                                std::size_t rowLength, std::size_t padTo) const
 {
     // The rows past count hold the initial state; so do all of them unless each entry is
     // written below (from one run of records).
@@ -35,7 +35,7 @@ void SampleHistory<D>::readRows(std::size_t first, std::size_t count, double* ou
     const std::size_t written = run ? count : 0;
     for (std::size_t c = 0; c < stride_; ++c)
     {
-        std::fill(out + c * rowLength + written, out + (c + 1) * rowLength, initial_[c]);
+        std::fill(out + c * rowLength + written, out + c * rowLength + padTo, initial_[c]);
     }
     if (expandFrom_.empty())
     {

@@ -7,9 +7,11 @@
 //     are not (the check has teeth);
 //   - the force is the exact −∂Π/∂x (finite differences) with zero total: elastic in TL and
 //     after a reference move, plastic (J2, Drucker-Prager) in TL after commits in flow (§M3-§M4);
-//   - a material with history under updated Lagrangian is refused (§M4).
+//   - a material with history under updated Lagrangian is refused (§M4);
+//   - several particles' points evaluated together (one block of lanes) change no digit.
 #include "core/InputError.hpp"
 #include "numerics/PlasticMotion.hpp"
+#include "numerics/PlasticPoints.hpp"
 #include "stabilisation/gradF/GradF.hpp"
 #include "stabilisation/gradF/MomentPoints.hpp"
 
@@ -176,7 +178,58 @@ void forceIsTheGradient()
     }
 }
 
+// Several particles' moment points evaluated in one call of a plastic material (sampleGroup)
+// change no digit: forces, F, P, energy and dissipation through commits in flow, against the
+// same evaluations particle by particle.
+template <int D>
+void groupedIsOneByOne(const char* plastic)
+{
+    INFO(D << "D " << plastic);
+    const auto run = [plastic](bool grouped, std::vector<Vec<D>>& T, std::vector<Mat<D>>& P,
+                               double& energy, double& dissipated)
+    {
+        test::SchemeFixture<D> f(test::schemeCloud<D>(7), kMoments, plastic, false,
+                                 test::schemeHOverDx<D>(), "cubicSpline", 1, false, false);
+        auto* gradF = dynamic_cast<GradF<D>*>(f.scheme.get());
+        REQUIRE(gradF);
+        gradF->groupSampleEvaluations(grouped);
+        const auto x1 = test::deformCurrent<D>(f.ref.x, 17);
+        const auto x2 = test::step<D>(x1, 0.02, 3);
+        dissipated = f.commit(x1);
+        dissipated += f.commit(x2);
+        const auto x3 = test::step<D>(x2, 0.02, 4);
+        std::vector<Mat<D>> F;
+        ForceOutput<D> out{T, F, P};
+        REQUIRE(f.scheme->computeForces(f.input(x3), out, true).ok());
+        energy = f.energy(x3);
+    };
+    std::vector<Vec<D>> T1, T2;
+    std::vector<Mat<D>> P1, P2;
+    double e1 = 0.0, e2 = 0.0, d1 = 0.0, d2 = 0.0;
+    run(false, T1, P1, e1, d1);
+    run(true, T2, P2, e2, d2);
+    REQUIRE(d1 > 0.0);
+    CHECK(test::sameBits(e1, e2));
+    CHECK(test::sameBits(d1, d2));
+    REQUIRE(T1.size() == T2.size());
+    for (std::size_t a = 0; a < T1.size(); ++a)
+    {
+        CHECK(test::sameBits(T1[a], T2[a]));
+        CHECK(test::sameBits(P1[a], P2[a]));
+    }
+}
+
 } // namespace
+
+TEST_CASE("gradF samplePoints moments: particles evaluated in groups, bit for bit",
+          "[gradF][moments]")
+{
+    for (const char* plastic : {test::kPlastic, test::kDP})
+    {
+        groupedIsOneByOne<2>(plastic);
+        groupedIsOneByOne<3>(plastic);
+    }
+}
 
 TEST_CASE("gradF moment points: the kernel weights' moments up to the second", "[gradF][moments]")
 {
