@@ -160,18 +160,20 @@ std::size_t halfBlockAsWhole(const std::string& materialText, const Mat<D>& cent
     return flowing;
 }
 
+// The two materials of the evaluations in rows: a frictional one, and steel with hardening.
+const std::string dp = "type druckerPrager; E 7.2e6; nu 0.2; rho 2000; frictionAngle 30; "
+                       "dilatancyAngle 10; cohesion 1e4;";
+const std::string hardening = "type j2Plasticity; E 200e9; nu 0.3; rho 7800; yieldStress 2e8; "
+                              "hardeningModulus 1e9;";
+const Mat<2> identity = Mat<2>::Identity();
+const Mat<3> identity3 = Mat<3>::Identity();
+
 } // namespace
 
 TEST_CASE("plastic samples: half a block in half the lanes gives a whole block's results, bit "
           "for bit",
           "[plasticity][lanes]")
 {
-    const std::string dp = "type druckerPrager; E 7.2e6; nu 0.2; rho 2000; frictionAngle 30; "
-                           "dilatancyAngle 10; cohesion 1e4;";
-    const std::string hardening = "type j2Plasticity; E 200e9; nu 0.3; rho 7800; yieldStress 2e8; "
-                                  "hardeningModulus 1e9;";
-    const Mat<2> identity = Mat<2>::Identity();
-    const Mat<3> identity3 = Mat<3>::Identity();
     std::size_t flowing = 0;
     for (unsigned seed = 1; seed <= 4; ++seed)
     {
@@ -193,12 +195,6 @@ TEST_CASE("gradF samples in rows: read() transposed and padded, bit for bit", "[
 TEST_CASE("plastic samples in rows: the packed evaluation's results, bit for bit",
           "[plasticity][lanes]")
 {
-    const std::string dp = "type druckerPrager; E 7.2e6; nu 0.2; rho 2000; frictionAngle 30; "
-                           "dilatancyAngle 10; cohesion 1e4;";
-    const std::string hardening = "type j2Plasticity; E 200e9; nu 0.3; rho 7800; yieldStress 2e8; "
-                                  "hardeningModulus 1e9;";
-    const Mat<2> identity = Mat<2>::Identity();
-    const Mat<3> identity3 = Mat<3>::Identity();
     const std::size_t dp2 = samplesInRowsAsPacked<2>(dp, identity, 0.01, 29, 1);
     CHECK(dp2 > 3);
     CHECK(dp2 < 26);
