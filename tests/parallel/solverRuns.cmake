@@ -266,6 +266,16 @@ sph_add_solver_run("plastic impact TL gradF elasticState restart from 2 on 1 ran
 sph_add_solver_run("plastic impact TL gradF elasticState fit joint bit-identical on 2 ranks" 2
                    ${sphImpact} bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
                    ${sphImpactTLFrames} -set stabilisation.fit=joint)
+# Moment points (gradF-moments.md): each particle's points from its reference neighbourhood
+# (a ghost's too), neighbouring particles' samples returned in one block of lanes, their states
+# in the history's first slots. Distributed, and continued serially from a distributed output.
+set(sphImpactTLMoments -set stabilisation.type=gradF -set stabilisation.samplePoints=moments)
+sph_add_solver_run("plastic impact TL gradF moments bit-identical on 2 ranks" 2 ${sphImpact}
+                   bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
+                   ${sphImpactTLMoments})
+sph_add_solver_run("plastic impact TL gradF moments restart from 2 on 1 ranks bit-identical" 2
+                   ${sphImpact} restartOn:1:1e-5 -threads 1 -set endTime=1.5e-5
+                   -set writeInterval=5e-6 ${sphImpactTLMoments})
 # The samples' states travel through the output's pieces: written on 2 ranks, continued on 3
 # and serially.
 foreach(second 3 1)
@@ -286,7 +296,9 @@ foreach(test "plastic impact bit-identical on 2 ranks" "plastic impact bit-ident
              "plastic impact UL gradF restart from 2 on 1 ranks bit-identical"
              "plastic impact TL gradF elasticState bit-identical on 2 ranks"
              "plastic impact TL gradF elasticState restart from 2 on 1 ranks bit-identical"
-             "plastic impact TL gradF elasticState fit joint bit-identical on 2 ranks")
+             "plastic impact TL gradF elasticState fit joint bit-identical on 2 ranks"
+             "plastic impact TL gradF moments bit-identical on 2 ranks"
+             "plastic impact TL gradF moments restart from 2 on 1 ranks bit-identical")
     set_property(TEST "parallel:sphSolid ${test}" APPEND PROPERTY ENVIRONMENT
                  "SPH_ROUNDOFF_TABLES=energy wall")
 endforeach()
@@ -295,6 +307,11 @@ sph_add_solver_run("Taylor bar UL gradF per-sample history bit-identical on 2 ra
                    ${CMAKE_SOURCE_DIR}/tutorials/plasticity3D/taylorBar bitIdentical -threads 1
                    -set endTime=4e-6 -set writeInterval=2e-6 -set functions={}
                    -set formulation.type=updatedLagrangian -set stabilisation.type=gradF)
+# Its moment points in 3D: two particles' seven points a block.
+sph_add_solver_run("Taylor bar TL gradF moments bit-identical on 2 ranks" 2
+                   ${CMAKE_SOURCE_DIR}/tutorials/plasticity3D/taylorBar bitIdentical -threads 1
+                   -set endTime=4e-6 -set writeInterval=2e-6 -set functions={}
+                   -set stabilisation.type=gradF -set stabilisation.samplePoints=moments)
 # A geomaterial: the column collapse tutorial as it is (druckerPrager sand under gravity
 # between walls; issue 29's UL gradF: samples that carry their elastic state, the moves' energy
 # weights chosen per pair, the close-pair energy, the reference moved every fifth step; every
