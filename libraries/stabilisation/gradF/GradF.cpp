@@ -48,7 +48,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
         std::unique_ptr<SampleGroupScratch> group;
         Scratch* members[maxSampleGroup] = {&scratch};
         ParticleStart* starts[maxSampleGroup] = {&started};
-        if (momentSamples_)
+        if (moments_.active())
         {
             group = std::make_unique<SampleGroupScratch>();
             for (std::size_t k = 1; k < maxSampleGroup; ++k)
@@ -88,7 +88,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 st.F = kin.F;
                 // Stresses at F_b(a) = F_a + G_a x^r_ba (or F̄_b(a)) for every neighbour b
                 // (incl. a), or at the moment points F_a + G_a ξ_q.
-                const std::size_t count = useSamplePoints(a, list.count(a), scratch);
+                const std::size_t count = moments_.use(a, list.count(a), scratch.xr.data(), scratch.w.data());
                 st.count = count;
                 const bool bar = particleVolume_ && material.hasHistory();
                 st.bar = bar;
@@ -300,7 +300,7 @@ double GradF<D>::energy(const ForceInput<D>& in)
             const Material<D>& material = *in.materials[static_cast<std::size_t>(in.body[a])];
             const Kinematics kin = kinematics(a, in.x, ref, false, scratch);
             double sum = 0.0;
-            const std::size_t count = useSamplePoints(a, list.count(a), scratch);
+            const std::size_t count = moments_.use(a, list.count(a), scratch.xr.data(), scratch.w.data());
             const bool framed = this->framed(material);
             if (framed)
             {

@@ -53,7 +53,7 @@
 //               (ownHistory or linearised), updated Lagrangian without history (§M4)
 
 #include "stabilisation/CsphOperators.hpp"
-#include "stabilisation/gradF/MomentPoints.hpp"
+#include "stabilisation/gradF/MomentSamples.hpp"
 #include "stabilisation/gradF/SampleFrames.hpp"
 #include "stabilisation/gradF/SampleHistory.hpp"
 
@@ -297,15 +297,10 @@ private:
     bool weightsDue_ = false;
     bool particleVolume_ = false; // sampleVolume particle (§G13)
     bool jointFit_ = false;       // fit joint (§G17)
-    // samplePoints moments (docs/theory/gradF-moments.md): each particle's 2D + 1 points and
-    // weights (MomentPoints.hpp), from its reference neighbourhood at prepare(); a weight of
-    // -1 at point 0 marks a particle that keeps its neighbour samples (§M2). Where the key was
-    // written, for the refusal of a material with history under updated Lagrangian (§M4).
-    bool momentSamples_ = false;
+    // samplePoints moments (docs/theory/gradF-moments.md), and where the key was written, for
+    // the refusal of a material with history under updated Lagrangian (§M4).
+    MomentSamples<D> moments_;
     SourceLocation samplePointsWhere_;
-    std::vector<Vec<D>> momentPoints_;
-    std::vector<double> momentWeights_;
-    void prepareMomentPoints(const ReferenceConfiguration<D>& ref);
     // §M4: a move would have to carry a moment point's history to the new points.
     void refuseMovingMomentHistory(const std::vector<const Material<D>*>& materials) const;
     // What a force evaluation's first half of a particle hands its second (computeForces).
@@ -329,7 +324,7 @@ private:
     // weighted.
     bool groupsSamples(const Material<D>& material) const
     {
-        return momentSamples_ && groupSamples_ && maxSampleGroup > 1 && material.hasHistory() &&
+        return moments_.active() && groupSamples_ && maxSampleGroup > 1 && material.hasHistory() &&
                !linearised_ && !frames_.active() && !samples_.weighted() &&
                material.readsStatesInRows();
     }
@@ -337,14 +332,7 @@ private:
     // are evaluated together: those with moment points, at most maxSampleGroup (at least 1).
     std::size_t sampleGroup(std::size_t a, std::size_t end) const
     {
-        constexpr std::size_t count = MomentPoints<D>::count;
-        std::size_t group = 0;
-        while (group < maxSampleGroup && a + group < end &&
-               momentWeights_[(a + group) * count] >= 0.0)
-        {
-            ++group;
-        }
-        return std::max<std::size_t>(group, 1);
+        return moments_.run(a, end, maxSampleGroup);
     }
     struct SampleGroupScratch
     {
@@ -364,28 +352,6 @@ private:
     void evaluateSampleGroup(std::size_t a, std::size_t group, const Material<D>& material,
                              const NeighbourList& list, bool psi, Scratch* const* members,
                              SampleGroupScratch& g);
-    // Particle a's sample offsets and weights into scratch.xr and scratch.w (after
-    // kinematics(), which filled them with the neighbours'): its moment points, or (without
-    // them) the neighbours left as they are. Returns how many samples there are.
-    std::size_t useSamplePoints(std::size_t a, std::size_t neighbours, Scratch& scratch) const
-    {
-        if (!momentSamples_)
-        {
-            return neighbours;
-        }
-        constexpr std::size_t count = MomentPoints<D>::count;
-        const std::size_t first = a * count;
-        if (momentWeights_[first] < 0.0)
-        {
-            return neighbours;
-        }
-        for (std::size_t q = 0; q < count; ++q)
-        {
-            scratch.xr[q] = momentPoints_[first + q];
-            scratch.w[q] = momentWeights_[first + q];
-        }
-        return count;
-    }
     // elasticState: the particles with history, whose K the move sets to zero and whose F^r
     // it sets to the dilation J^(1/D) I (§G4), marked by moveHistory() for the
     // referenceUpdate() that follows it.

@@ -1,6 +1,7 @@
 // gradF's stress samples at moment points (`samplePoints moments`,
-// docs/theory/gradF-moments.md): each particle's points from its reference neighbourhood, and
-// the refusal of what they cannot carry (§M4). Where the samples are used is GradF.cpp.
+// docs/theory/gradF-moments.md): each particle's points from its reference neighbourhood
+// (MomentSamples), and gradF's refusal of what they cannot carry (§M4). Where the samples are
+// used is GradF.cpp.
 #include "core/InputError.hpp"
 #include "particles/Parallel.hpp"
 #include "stabilisation/gradF/GradF.hpp"
@@ -10,21 +11,21 @@ namespace sph
 
 // The offsets x^r_ba and weights Ŵ_ab as kinematics() makes them (j = 0 the particle itself).
 template <int D>
-void GradF<D>::prepareMomentPoints(const ReferenceConfiguration<D>& ref)
+void MomentSamples<D>::prepare(const ReferenceConfiguration<D>& ref,
+                               const std::vector<double>& invDenominator, std::size_t maxNeighbours)
 {
-    constexpr std::size_t count = MomentPoints<D>::count;
     const NeighbourList& list = ref.neighbours;
     const std::size_t n = ref.size();
-    momentPoints_.resize(momentSamples_ ? n * count : 0);
-    momentWeights_.resize(momentSamples_ ? n * count : 0);
-    if (!momentSamples_)
+    points_.resize(active_ ? n * count : 0);
+    weights_.resize(active_ ? n * count : 0);
+    if (!active_)
     {
         return;
     }
 #pragma omp parallel if (useThreads(n))
     {
-        std::vector<Vec<D>> xr(maxNeighbours_);
-        std::vector<double> w(maxNeighbours_);
+        std::vector<Vec<D>> xr(maxNeighbours);
+        std::vector<double> w(maxNeighbours);
 #pragma omp for schedule(static)
         for (std::size_t a = 0; a < n; ++a)
         {
@@ -35,12 +36,12 @@ void GradF<D>::prepareMomentPoints(const ReferenceConfiguration<D>& ref)
             {
                 const std::size_t b = list.indices[first + j];
                 xr[j] = j == 0 ? Vec<D>::Zero() : Vec<D>(ref.x[b] - ref.x[a]);
-                w[j] = W[j] * ref.V[b] * invDenominator_[a];
+                w[j] = W[j] * ref.V[b] * invDenominator[a];
             }
-            if (!momentPoints<D>(xr.data(), w.data(), neighbours, &momentPoints_[a * count],
-                                 &momentWeights_[a * count]))
+            if (!momentPoints<D>(xr.data(), w.data(), neighbours, &points_[a * count],
+                                 &weights_[a * count]))
             {
-                momentWeights_[a * count] = -1.0; // keeps its neighbour samples (§M2)
+                weights_[a * count] = -1.0; // keeps its neighbour samples (§M2)
             }
         }
     }
@@ -49,7 +50,7 @@ void GradF<D>::prepareMomentPoints(const ReferenceConfiguration<D>& ref)
 template <int D>
 void GradF<D>::refuseMovingMomentHistory(const std::vector<const Material<D>*>& materials) const
 {
-    if (!momentSamples_ || !referenceMoves_)
+    if (!moments_.active() || !referenceMoves_)
     {
         return;
     }
@@ -68,9 +69,9 @@ void GradF<D>::refuseMovingMomentHistory(const std::vector<const Material<D>*>& 
     }
 }
 
-template void GradF<1>::prepareMomentPoints(const ReferenceConfiguration<1>&);
-template void GradF<2>::prepareMomentPoints(const ReferenceConfiguration<2>&);
-template void GradF<3>::prepareMomentPoints(const ReferenceConfiguration<3>&);
+template class MomentSamples<1>;
+template class MomentSamples<2>;
+template class MomentSamples<3>;
 template void GradF<1>::refuseMovingMomentHistory(const std::vector<const Material<1>*>&) const;
 template void GradF<2>::refuseMovingMomentHistory(const std::vector<const Material<2>*>&) const;
 template void GradF<3>::refuseMovingMomentHistory(const std::vector<const Material<3>*>&) const;

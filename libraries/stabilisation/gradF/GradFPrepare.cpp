@@ -80,7 +80,7 @@ ForceStatus GradF<D>::prepare(const ReferenceConfiguration<D>& ref)
             Y_[a] = Y;
         }
     }
-    prepareMomentPoints(ref);
+    moments_.prepare(ref, invDenominator_, maxNeighbours_);
     if (singular < 0)
     {
         return {};

@@ -83,12 +83,12 @@ GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args& arg
       openedFromParticle_(params.word("openedSamples") == "particle"),
       particleVolume_(params.word("sampleVolume") == "particle"),
       jointFit_(params.word("fit") == "joint"),
-      momentSamples_(params.word("samplePoints") == "moments"),
       samplePointsWhere_(params.location("samplePoints"))
 {
     // elasticState's samples are the pairs' own: they are carried by the pairs across moves
     // and frames (§G25), which moment points are not (§M4).
-    if (momentSamples_ && elasticState_)
+    moments_.activate(params.word("samplePoints") == "moments");
+    if (moments_.active() && elasticState_)
     {
         params.fail("samplePoints",
                     "samplePoints moments samples the stress at points that are not neighbours, "
