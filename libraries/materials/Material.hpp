@@ -64,6 +64,12 @@ struct HistoryOf
     std::size_t nextStride = 0;
 
     static constexpr std::size_t rowBlock = 16;
+    // The row length for count states in rows: whole blocks, or half a block for at most half
+    // of one (the material reads those in half as many lanes).
+    static constexpr std::size_t rowLengthFor(std::size_t count)
+    {
+        return count <= rowBlock / 2 ? rowBlock / 2 : (count + rowBlock - 1) / rowBlock * rowBlock;
+    }
 
     static HistoryOf particles(std::size_t first) { return {first}; }
     static HistoryOf trialOf(std::size_t particle)

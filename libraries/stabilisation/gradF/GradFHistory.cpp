@@ -59,9 +59,7 @@ void GradF<D>::evaluateSampleGroup(std::size_t a, std::size_t group, const Mater
     constexpr std::size_t count = MomentPoints<D>::count;
     const std::size_t total = group * count;
     const std::size_t stride = samples_.stride();
-    // A half row for at most half a block, as historyAround() (the material's lanes follow).
-    const std::size_t rowLength =
-        total <= HistoryOf::rowBlock / 2 ? HistoryOf::rowBlock / 2 : HistoryOf::rowBlock;
+    const std::size_t rowLength = HistoryOf::rowLengthFor(total);
     if (g.states.size() < rowLength * stride)
     {
         g.states.resize(rowLength * stride);
@@ -118,11 +116,7 @@ HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
         // a half row, which the material reads in half as many lanes. (The buffers only grow:
         // resizing them down and up again, particle by particle, cleared the new part each
         // time.)
-        constexpr std::size_t halfBlock = HistoryOf::rowBlock / 2;
-        const std::size_t rowLength =
-            count <= halfBlock
-                ? halfBlock
-                : (count + HistoryOf::rowBlock - 1) / HistoryOf::rowBlock * HistoryOf::rowBlock;
+        const std::size_t rowLength = HistoryOf::rowLengthFor(count);
         const auto atLeast = [](auto& buffer, std::size_t size)
         {
             if (buffer.size() < size)
