@@ -88,7 +88,9 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 st.F = kin.F;
                 // Stresses at F_b(a) = F_a + G_a x^r_ba (or F̄_b(a)) for every neighbour b
                 // (incl. a), or at the moment points F_a + G_a ξ_q.
-                const std::size_t count = moments_.use(a, list.count(a), scratch.xr.data(), scratch.w.data());
+                const std::size_t count =
+                    moments_.use(a, list.count(a), scratch.xr.data(), scratch.w.data(),
+                                 moments_.carriesStates() && material.hasHistory());
                 st.count = count;
                 const bool bar = particleVolume_ && material.hasHistory();
                 st.bar = bar;
@@ -123,7 +125,7 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 const bool weighted = st.weighted;
                 if (weighted)
                 {
-                    useEnergyWeights(a, material, list, st.F, true, scratch);
+                    useEnergyWeights(a, material, count, st.F, true, scratch);
                 }
                 if (material.hasHistory() && !linearised_)
                 {
@@ -210,12 +212,12 @@ ForceStatus GradF<D>::computeForces(const ForceInput<D>& in, ForceOutput<D>& out
                 }
                 if (size == 1)
                 {
-                    evaluateSamples(a, material, list, started.count,
+                    evaluateSamples(a, material, started.count,
                                     started.wantPsi ? scratch.psi.data() : nullptr, scratch, true);
                 }
                 else
                 {
-                    evaluateSampleGroup(a, size, material, list, started.wantPsi, members, *group);
+                    evaluateSampleGroup(a, size, material, started.wantPsi, members, *group);
                 }
                 for (std::size_t k = 0; k < size; ++k)
                 {
@@ -300,18 +302,20 @@ double GradF<D>::energy(const ForceInput<D>& in)
             const Material<D>& material = *in.materials[static_cast<std::size_t>(in.body[a])];
             const Kinematics kin = kinematics(a, in.x, ref, false, scratch);
             double sum = 0.0;
-            const std::size_t count = moments_.use(a, list.count(a), scratch.xr.data(), scratch.w.data());
+            const std::size_t count =
+                moments_.use(a, list.count(a), scratch.xr.data(), scratch.w.data(),
+                             moments_.carriesStates() && material.hasHistory());
             const bool framed = this->framed(material);
             if (framed)
             {
                 fillFramedSamples(a, in.x, list, kin, scratch);
             }
             fillSamples(kin, count, scratch, particleVolume_ && material.hasHistory(), false, framed);
-            evaluateSamples(a, material, list, count, scratch.psi.data(), scratch, false);
+            evaluateSamples(a, material, count, scratch.psi.data(), scratch, false);
             if (samples_.weighted() && material.hasHistory())
             {
                 // Between a move and the evaluation after it: the weights it will choose.
-                useEnergyWeights(a, material, list, kin.F, false, scratch);
+                useEnergyWeights(a, material, count, kin.F, false, scratch);
             }
             for (std::size_t j = 0; j < count; ++j)
             {

@@ -50,7 +50,9 @@
 //   moments     2D + 1 points with the kernel weights' moments of order 0, 1 and 2: the same
 //               energy for every Ψ quadratic in F, about 6x (2D) and 8x (3D) fewer stress
 //               evaluations; the particle is point 0. Total Lagrangian with any material
-//               (ownHistory or linearised), updated Lagrangian without history (§M4)
+//               (ownHistory or linearised); updated Lagrangian without history, or with
+//               plasticSamples elasticState, whose points turn with the material at each move
+//               and carry their states (§M7)
 
 #include "stabilisation/CsphOperators.hpp"
 #include "stabilisation/gradF/MomentSamples.hpp"
@@ -95,7 +97,15 @@ public:
         refuseMovingMomentHistory(materials);
         if (!linearised_)
         {
-            samples_.declare(materials, fields, weights_ != MoveWeights::kernel);
+            // Updated Lagrangian with moment points: a particle's samples are its points,
+            // whatever its neighbours, and the points follow the material (§M7).
+            const bool points = moments_.active() && elasticState_ && referenceMoves_;
+            samples_.declare(materials, fields, weights_ != MoveWeights::kernel,
+                             points ? MomentPoints<D>::count : 0);
+            if (points && samples_.active())
+            {
+                moments_.carryStates(fields);
+            }
         }
         if (elasticState_ && !referenceMoves_)
         {
@@ -301,7 +311,8 @@ private:
     // the refusal of a material with history under updated Lagrangian (§M4).
     MomentSamples<D> moments_;
     SourceLocation samplePointsWhere_;
-    // §M4: a move would have to carry a moment point's history to the new points.
+    // §M4: a material with history under updated Lagrangian needs plasticSamples elasticState
+    // (§M7) with moment points.
     void refuseMovingMomentHistory(const std::vector<const Material<D>*>& materials) const;
     // What a force evaluation's first half of a particle hands its second (computeForces).
     struct ParticleStart
@@ -350,8 +361,7 @@ private:
     // material: their samples side by side, each particle's slice back into its scratch and its
     // pending states kept in particle order, as evaluating them one by one does, bit for bit.
     void evaluateSampleGroup(std::size_t a, std::size_t group, const Material<D>& material,
-                             const NeighbourList& list, bool psi, Scratch* const* members,
-                             SampleGroupScratch& g);
+                             bool psi, Scratch* const* members, SampleGroupScratch& g);
     // elasticState: the particles with history, whose K the move sets to zero and whose F^r
     // it sets to the dilation J^(1/D) I (§G4), marked by moveHistory() for the
     // referenceUpdate() that follows it.
@@ -370,18 +380,18 @@ private:
     std::vector<double> dissipationAside_; // setAsideEvaluation()
     // Where the samples around particle a find their history: their states read into
     // scratch (and, with pending, where the evaluation puts the states to commit).
-    HistoryOf historyAround(std::size_t a, const Material<D>& material,
-                            const NeighbourList& list, Scratch& scratch, bool pending);
+    HistoryOf historyAround(std::size_t a, const Material<D>& material, std::size_t count,
+                            Scratch& scratch, bool pending);
     // P(F_b(a)) (and Ψ when psi is not null) of particle a's count samples in scratch.F; with
     // pending, also the states a commit would make of them (a force evaluation).
-    void evaluateSamples(std::size_t a, const Material<D>& material, const NeighbourList& list,
-                         std::size_t count, double* psi, Scratch& scratch, bool pending);
+    void evaluateSamples(std::size_t a, const Material<D>& material, std::size_t count,
+                         double* psi, Scratch& scratch, bool pending);
     // moveWeights (§G9): puts particle a's energy weights into scratch.w in place of the
     // kernel's: those of its samples, or, in the first evaluation after a move (weightsDue_),
     // chosen from scratch.psi, the samples' energies at the reference (F_b(a) = Fr for all b),
     // and kept for the samples when `keep`; the kernel's on a first layout. Returns the energy
     // the choice could not keep (0 to round-off).
-    double useEnergyWeights(std::size_t a, const Material<D>& material, const NeighbourList& list,
+    double useEnergyWeights(std::size_t a, const Material<D>& material, std::size_t count,
                             const Mat<D>& Fr, bool keep, Scratch& scratch);
 };
 

@@ -11,16 +11,16 @@ namespace sph
 {
 
 template <int D>
-void GradF<D>::evaluateSamples(std::size_t a, const Material<D>& material, const NeighbourList& list,
-                               std::size_t count, double* psi, Scratch& scratch, bool pending)
+void GradF<D>::evaluateSamples(std::size_t a, const Material<D>& material, std::size_t count,
+                               double* psi, Scratch& scratch, bool pending)
 {
     if (!(linearised_ && material.hasHistory()))
     {
         material.evaluate(scratch.F.data(), scratch.P.data(), psi, count,
-                          historyAround(a, material, list, scratch, pending));
+                          historyAround(a, material, count, scratch, pending));
         if (pending && material.hasHistory())
         {
-            samples_.keepPending(list.begin(a), count, scratch.nextStates.data(),
+            samples_.keepPending(samples_.begin(a), count, scratch.nextStates.data(),
                                  scratch.changed.data());
         }
         return;
@@ -53,7 +53,7 @@ void GradF<D>::evaluateSamples(std::size_t a, const Material<D>& material, const
 
 template <int D>
 void GradF<D>::evaluateSampleGroup(std::size_t a, std::size_t group, const Material<D>& material,
-                                   const NeighbourList& list, bool psi,
+                                   bool psi,
                                    Scratch* const* members, SampleGroupScratch& g)
 {
     constexpr std::size_t count = MomentPoints<D>::count;
@@ -72,7 +72,7 @@ void GradF<D>::evaluateSampleGroup(std::size_t a, std::size_t group, const Mater
     {
         const std::size_t offset = k * count;
         std::copy(members[k]->F.begin(), members[k]->F.begin() + count, g.F + offset);
-        samples_.readRows(list.begin(a + k), count, g.states.data() + offset, rowLength,
+        samples_.readRows(samples_.begin(a + k), count, g.states.data() + offset, rowLength,
                           rowLength - offset);
     }
     material.evaluate(g.F, g.P, psi ? g.psi : nullptr, total,
@@ -81,7 +81,7 @@ void GradF<D>::evaluateSampleGroup(std::size_t a, std::size_t group, const Mater
     for (std::size_t k = 0; k < group; ++k)
     {
         const std::size_t offset = k * count;
-        samples_.keepPending(list.begin(a + k), count, g.next.data() + offset * stride,
+        samples_.keepPending(samples_.begin(a + k), count, g.next.data() + offset * stride,
                              g.changed + offset);
         Scratch& member = *members[k];
         std::copy(g.P + offset, g.P + offset + count, member.P.begin());
@@ -95,8 +95,8 @@ void GradF<D>::evaluateSampleGroup(std::size_t a, std::size_t group, const Mater
 }
 
 template <int D>
-HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
-                                  const NeighbourList& list, Scratch& scratch, bool pending)
+HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material, std::size_t count,
+                                  Scratch& scratch, bool pending)
 {
     if (!material.hasHistory())
     {
@@ -108,7 +108,6 @@ HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
                                "called");
     }
     const std::size_t stride = samples_.stride();
-    const std::size_t count = list.count(a);
     if (material.readsStatesInRows())
     {
         // In rows (the material reads each component of 16 samples at once), padded to whole
@@ -116,7 +115,10 @@ HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
         // a half row, which the material reads in half as many lanes. (The buffers only grow:
         // resizing them down and up again, particle by particle, cleared the new part each
         // time.)
-        const std::size_t rowLength = HistoryOf::rowLengthFor(count);
+        // (The row's length from the particle's slots, not its samples: total-Lagrangian
+        // moment points lie in the first slots of the neighbour list's, and a row of fewer
+        // lanes returns them in other lanes, whose round-off differs in 3D.)
+        const std::size_t rowLength = HistoryOf::rowLengthFor(samples_.entries(a));
         const auto atLeast = [](auto& buffer, std::size_t size)
         {
             if (buffer.size() < size)
@@ -125,7 +127,7 @@ HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
             }
         };
         atLeast(scratch.states, rowLength * stride);
-        samples_.readRows(list.begin(a), count, scratch.states.data(), rowLength);
+        samples_.readRows(samples_.begin(a), count, scratch.states.data(), rowLength);
         if (!pending)
         {
             return HistoryOf::samplesInRows(scratch.states.data(), rowLength, stride);
@@ -137,7 +139,7 @@ HistoryOf GradF<D>::historyAround(std::size_t a, const Material<D>& material,
                                         scratch.changed.data());
     }
     scratch.states.resize(count * stride);
-    samples_.read(list.begin(a), count, scratch.states.data());
+    samples_.read(samples_.begin(a), count, scratch.states.data());
     if (!pending)
     {
         return HistoryOf::samples(scratch.states.data(), stride);
@@ -181,29 +183,26 @@ double GradF<D>::commitHistory(const HistoryCommit<D>& in)
 }
 
 // GradF<D> is instantiated in GradF.cpp; these are its members defined here.
-template void GradF<1>::evaluateSamples(std::size_t, const Material<1>&, const NeighbourList&,
-                                         std::size_t, double*, Scratch&, bool);
-template HistoryOf GradF<1>::historyAround(std::size_t, const Material<1>&, const NeighbourList&,
+template void GradF<1>::evaluateSamples(std::size_t, const Material<1>&, std::size_t,
+                                         double*, Scratch&, bool);
+template HistoryOf GradF<1>::historyAround(std::size_t, const Material<1>&, std::size_t,
                                           Scratch&, bool);
 template double GradF<1>::commitHistory(const HistoryCommit<1>&);
 template void GradF<1>::evaluateSampleGroup(std::size_t, std::size_t, const Material<1>&,
-                                             const NeighbourList&, bool, Scratch* const*,
-                                             SampleGroupScratch&);
-template void GradF<2>::evaluateSamples(std::size_t, const Material<2>&, const NeighbourList&,
-                                         std::size_t, double*, Scratch&, bool);
-template HistoryOf GradF<2>::historyAround(std::size_t, const Material<2>&, const NeighbourList&,
+                                             bool, Scratch* const*, SampleGroupScratch&);
+template void GradF<2>::evaluateSamples(std::size_t, const Material<2>&, std::size_t,
+                                         double*, Scratch&, bool);
+template HistoryOf GradF<2>::historyAround(std::size_t, const Material<2>&, std::size_t,
                                           Scratch&, bool);
 template double GradF<2>::commitHistory(const HistoryCommit<2>&);
 template void GradF<2>::evaluateSampleGroup(std::size_t, std::size_t, const Material<2>&,
-                                             const NeighbourList&, bool, Scratch* const*,
-                                             SampleGroupScratch&);
-template void GradF<3>::evaluateSamples(std::size_t, const Material<3>&, const NeighbourList&,
-                                         std::size_t, double*, Scratch&, bool);
-template HistoryOf GradF<3>::historyAround(std::size_t, const Material<3>&, const NeighbourList&,
+                                             bool, Scratch* const*, SampleGroupScratch&);
+template void GradF<3>::evaluateSamples(std::size_t, const Material<3>&, std::size_t,
+                                         double*, Scratch&, bool);
+template HistoryOf GradF<3>::historyAround(std::size_t, const Material<3>&, std::size_t,
                                           Scratch&, bool);
 template double GradF<3>::commitHistory(const HistoryCommit<3>&);
 template void GradF<3>::evaluateSampleGroup(std::size_t, std::size_t, const Material<3>&,
-                                             const NeighbourList&, bool, Scratch* const*,
-                                             SampleGroupScratch&);
+                                             bool, Scratch* const*, SampleGroupScratch&);
 
 } // namespace sph

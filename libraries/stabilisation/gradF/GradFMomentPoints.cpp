@@ -22,6 +22,16 @@ void MomentSamples<D>::prepare(const ReferenceConfiguration<D>& ref,
     {
         return;
     }
+    if (carrying_ && axes_.size() != n)
+    {
+        throw std::logic_error("MomentSamples: axes of " + std::to_string(axes_.size()) +
+                               " particles, a reference of " + std::to_string(n));
+    }
+    if (moving_ && targets_.size() != n)
+    {
+        throw std::logic_error("MomentSamples: a move of " + std::to_string(targets_.size()) +
+                               " particles, a reference of " + std::to_string(n));
+    }
 #pragma omp parallel if (useThreads(n))
     {
         std::vector<Vec<D>> xr(maxNeighbours);
@@ -38,19 +48,39 @@ void MomentSamples<D>::prepare(const ReferenceConfiguration<D>& ref,
                 xr[j] = j == 0 ? Vec<D>::Zero() : Vec<D>(ref.x[b] - ref.x[a]);
                 w[j] = W[j] * ref.V[b] * invDenominator[a];
             }
-            if (!momentPoints<D>(xr.data(), w.data(), neighbours, &points_[a * count],
-                                 &weights_[a * count]))
+            Vec<D>* points = &points_[a * count];
+            if (!momentPoints<D>(xr.data(), w.data(), neighbours, points, &weights_[a * count]))
             {
                 weights_[a * count] = -1.0; // keeps its neighbour samples (§M2)
+                if (carrying_)
+                {
+                    axes_[a] = notYet(); // or samples alone; its next axes are Cholesky's (§M7)
+                }
+                continue;
             }
+            if (!carrying_)
+            {
+                continue;
+            }
+            // §M7: a move turns the axes with the material (M7.2); a restart, or a new
+            // layout of the same reference (a distributed run's), keeps them.
+            const Mat<D>& kept = moving_ ? targets_[a] : axes_[a];
+            if (!kept.allFinite())
+            {
+                axes_[a] = momentAxes<D>(points); // Cholesky's
+                continue;
+            }
+            axes_[a] = moving_ ? carriedAxes<D>(momentAxes<D>(points), kept) : kept;
+            turnMomentPoints<D>(points, axes_[a]);
         }
     }
+    moving_ = false;
 }
 
 template <int D>
 void GradF<D>::refuseMovingMomentHistory(const std::vector<const Material<D>*>& materials) const
 {
-    if (!moments_.active() || !referenceMoves_)
+    if (!moments_.active() || !referenceMoves_ || elasticState_)
     {
         return;
     }
@@ -61,10 +91,11 @@ void GradF<D>::refuseMovingMomentHistory(const std::vector<const Material<D>*>& 
             throw InputError(samplePointsWhere_,
                              "samplePoints moments with formulation updatedLagrangian and a "
                              "material with plastic history: each reference move makes new "
-                             "points, and carrying a point's history to them is not derived "
-                             "(docs/theory/gradF-moments.md §M4)",
-                             {"hint: use formulation totalLagrangian with samplePoints moments, "
-                              "or remove samplePoints (neighbours, the default)"});
+                             "points, whose history only plasticSamples elasticState carries "
+                             "to them (docs/theory/gradF-moments.md §M4, §M7)",
+                             {"hint: add 'plasticSamples elasticState;' to stabilisation, use "
+                              "formulation totalLagrangian, or remove samplePoints (neighbours, "
+                              "the default)"});
         }
     }
 }

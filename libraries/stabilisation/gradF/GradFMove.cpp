@@ -42,6 +42,10 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
     movedFrames_.assign(n, 0.0);
     movedFramesAt_ = x.data();
     samples_.storeEveryState(body, materials); // none stays the initial one
+    if (moments_.carriesStates())
+    {
+        moments_.startMove(n); // the points turn with the material (§M7)
+    }
 #pragma omp parallel if (useThreads(n))
     {
         Scratch scratch;
@@ -58,15 +62,21 @@ void GradF<D>::moveHistory(const std::vector<Vec<D>>& x, const ReferenceConfigur
             const Kinematics kin = kinematics(a, x, ref, false, scratch);
             movedFrames_[a] = std::pow(kin.F.determinant(), 1.0 / D);
             const Mat<D> frame = movedFrames_[a] * Mat<D>::Identity();
-            const std::size_t first = list.begin(a);
+            // The samples: the neighbours', or the moment points' (§M7).
+            const std::size_t count = moments_.use(a, list.count(a), scratch.xr.data(),
+                                                   scratch.w.data(), moments_.carriesStates());
+            if (moments_.carriesStates())
+            {
+                moments_.follow(a, kin.f);
+            }
             const double Jr = ref.F[a].determinant();
-            const double smallest = fillSamples(kin, list.count(a), scratch, particleVolume_, true) / Jr;
+            const double smallest = fillSamples(kin, count, scratch, particleVolume_, true) / Jr;
             if (!(smallest > 0.0))
             {
                 inverted[a] = smallest;
             }
-            scratch.states.resize(list.count(a) * samples_.stride());
-            samples_.rebase(first, list.count(a), material, scratch.F.data(), frame,
+            scratch.states.resize(count * samples_.stride());
+            samples_.rebase(samples_.begin(a), count, material, scratch.F.data(), frame,
                             scratch.states.data());
             material.rebaseParticleHistory(a, kin.F, frame);
         }
@@ -171,13 +181,10 @@ ForceStatus GradF<D>::referenceUpdate(const std::vector<Vec<D>>& x,
 // unchanged by the move, G4.1) + Σ_left ω_ab W_ab (the pairs that left, from their rebased
 // states at F^r_a); new pairs had ω = 0.
 template <int D>
-double GradF<D>::useEnergyWeights(std::size_t a, const Material<D>& material,
-                                  const NeighbourList& list, const Mat<D>& Fr, bool keep,
-                                  Scratch& scratch)
+double GradF<D>::useEnergyWeights(std::size_t a, const Material<D>& material, std::size_t count,
+                                  const Mat<D>& Fr, bool keep, Scratch& scratch)
 {
-    const std::size_t first = list.begin(a);
-    const std::size_t count = list.count(a);
-    double* kept = &samples_.weight(first);
+    double* kept = &samples_.weight(samples_.begin(a));
     double* omega = scratch.omega.data();
     double residual = 0.0;
     if (std::isnan(kept[0])) // a first layout: the kernel's
@@ -256,19 +263,16 @@ template ForceStatus GradF<2>::referenceUpdate(const std::vector<Vec<2>>&,
 template ForceStatus GradF<3>::referenceUpdate(const std::vector<Vec<3>>&,
                                                const ReferenceConfiguration<3>&,
                                                std::vector<Mat<3>>&, std::vector<Tensor3<3>>*) const;
-template double GradF<1>::useEnergyWeights(std::size_t, const Material<1>&,
-                                             const NeighbourList&, const Mat<1>&, bool,
-                                             Scratch&);
+template double GradF<1>::useEnergyWeights(std::size_t, const Material<1>&, std::size_t,
+                                             const Mat<1>&, bool, Scratch&);
 template void GradF<1>::moveHistory(const std::vector<Vec<1>>&, const ReferenceConfiguration<1>&,
                                      const std::vector<int>&, const std::vector<Material<1>*>&);
-template double GradF<2>::useEnergyWeights(std::size_t, const Material<2>&,
-                                             const NeighbourList&, const Mat<2>&, bool,
-                                             Scratch&);
+template double GradF<2>::useEnergyWeights(std::size_t, const Material<2>&, std::size_t,
+                                             const Mat<2>&, bool, Scratch&);
 template void GradF<2>::moveHistory(const std::vector<Vec<2>>&, const ReferenceConfiguration<2>&,
                                      const std::vector<int>&, const std::vector<Material<2>*>&);
-template double GradF<3>::useEnergyWeights(std::size_t, const Material<3>&,
-                                             const NeighbourList&, const Mat<3>&, bool,
-                                             Scratch&);
+template double GradF<3>::useEnergyWeights(std::size_t, const Material<3>&, std::size_t,
+                                             const Mat<3>&, bool, Scratch&);
 template void GradF<3>::moveHistory(const std::vector<Vec<3>>&, const ReferenceConfiguration<3>&,
                                      const std::vector<int>&, const std::vector<Material<3>*>&);
 

@@ -67,7 +67,8 @@ Schema GradF<D>::schema()
                        "moments of the kernel weights up to the second: the same energy for "
                        "every strain energy quadratic in F, 6-8x fewer stress evaluations; "
                        "total Lagrangian with any material, updated Lagrangian without plastic "
-                       "history; docs/theory/gradF-moments.md)")
+                       "history or with plasticSamples elasticState (the points turn with the "
+                       "material and carry their states); docs/theory/gradF-moments.md)")
                  .choices({"neighbours", "moments"})
                  .defaultValue("neighbours"));
 }
@@ -85,17 +86,29 @@ GradF<D>::GradF(const Params& params, const typename Stabilisation<D>::Args& arg
       jointFit_(params.word("fit") == "joint"),
       samplePointsWhere_(params.location("samplePoints"))
 {
-    // elasticState's samples are the pairs' own: they are carried by the pairs across moves
-    // and frames (§G25), which moment points are not (§M4).
+    // Total-Lagrangian elasticState's samples are the pairs' own: their frames (§G25) are the
+    // neighbours' positions, which moment points are not (§M4). In updated Lagrangian form the
+    // points carry their states across the moves (§M7), but not an opened neighbour's state
+    // (§G22: a pair's).
     moments_.activate(params.word("samplePoints") == "moments");
-    if (moments_.active() && elasticState_)
+    if (moments_.active() && elasticState_ && !referenceMoves_)
     {
         params.fail("samplePoints",
                     "samplePoints moments samples the stress at points that are not neighbours, "
-                    "but plasticSamples elasticState carries each sample's state with its "
-                    "neighbour pair (docs/theory/gradF-moments.md §M4)",
+                    "but plasticSamples elasticState in total Lagrangian form frames each "
+                    "sample at its neighbour's position (docs/theory/gradF-moments.md §M4)",
                     {"hint: use plasticSamples ownHistory (the default) with formulation "
-                     "totalLagrangian, or remove samplePoints (neighbours, the default)"});
+                     "totalLagrangian, formulation updatedLagrangian (§M7), or remove "
+                     "samplePoints (neighbours, the default)"});
+    }
+    if (moments_.active() && openedFromParticle_)
+    {
+        params.fail("openedSamples",
+                    "openedSamples particle gives the sample of a pair a-b the state of an "
+                    "opened neighbour b, and samplePoints moments samples at points, not at "
+                    "neighbours (docs/theory/gradF-moments.md §M7)",
+                    {"hint: remove openedSamples (own, the default), or samplePoints "
+                     "(neighbours, the default)"});
     }
     // Only samples that carry their elastic state have weights to choose.
     if (!elasticState_ && params.given("moveWeights") && params.word("moveWeights") != "kernel")

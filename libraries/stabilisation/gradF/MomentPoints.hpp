@@ -6,6 +6,7 @@
 #include "particles/Types.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <cmath>
@@ -82,6 +83,94 @@ bool momentPoints(const Vec<D>* xr, const double* w, std::size_t neighbours, Vec
         weights[2 + 2 * k] = total * rest / (2.0 * D);
     }
     return true;
+}
+
+// The axes A of a particle's points (columns, ξ_{±k} = μ ± A e_k): ½ (ξ_{+k} − ξ_{−k}).
+template <int D>
+Mat<D> momentAxes(const Vec<D>* points)
+{
+    Mat<D> axes;
+    for (int k = 0; k < D; ++k)
+    {
+        axes.col(k) = 0.5 * (points[1 + 2 * k] - points[2 + 2 * k]);
+    }
+    return axes;
+}
+
+// The points of (M3) on other axes A with the same A Aᵀ (the same moments, §M2).
+template <int D>
+void turnMomentPoints(Vec<D>* points, const Mat<D>& axes)
+{
+    const Vec<D> mu = 0.5 * (points[1] + points[2]);
+    for (int k = 0; k < D; ++k)
+    {
+        points[1 + 2 * k] = mu + axes.col(k);
+        points[2 + 2 * k] = mu - axes.col(k);
+    }
+}
+
+// The orthogonal factor R of the polar decomposition X = R P (P symmetric positive definite):
+// the orthogonal matrix closest to X, the maximiser of tr(Rᵀ X). In 2D in closed form (the
+// better of the rotations and the reflections, each a maximum over one angle), else by the
+// scaled Newton iteration R ← ½ (γ R + R⁻ᵀ/γ), γ = (‖R⁻¹‖/‖R‖)^(1/2) (quadratic convergence).
+// X must be invertible.
+template <int D>
+Mat<D> orthogonalPolarFactor(const Mat<D>& X)
+{
+    if constexpr (D == 1)
+    {
+        return Mat<D>::Constant(X(0, 0) < 0.0 ? -1.0 : 1.0);
+    }
+    else if constexpr (D == 2)
+    {
+        const double rc = X(0, 0) + X(1, 1), rs = X(1, 0) - X(0, 1); // rotations
+        const double fc = X(0, 0) - X(1, 1), fs = X(1, 0) + X(0, 1); // reflections
+        Mat<D> R;
+        if (std::hypot(rc, rs) >= std::hypot(fc, fs))
+        {
+            const double n = std::hypot(rc, rs);
+            R << rc / n, -rs / n, rs / n, rc / n;
+        }
+        else
+        {
+            const double n = std::hypot(fc, fs);
+            R << fc / n, fs / n, fs / n, -fc / n;
+        }
+        return R;
+    }
+    else
+    {
+        Mat<D> R = X;
+        for (int iteration = 0; iteration < 50; ++iteration)
+        {
+            const Mat<D> inverse = R.inverse();
+            const double gamma = std::sqrt(std::sqrt(inverse.squaredNorm() / R.squaredNorm()));
+            const Mat<D> next = 0.5 * (gamma * R + inverse.transpose() / gamma);
+            const double change = (next - R).norm();
+            R = next;
+            if (change <= 1.0e-15 * std::sqrt(static_cast<double>(D)))
+            {
+                break;
+            }
+        }
+        return R;
+    }
+}
+
+// The axes closest to `carried` (the old axes moved with the material, f_a A) among those of a
+// rule whose Cholesky axes are C = √D L, which are C U for every orthogonal U (their product
+// with their transpose is D Σ): A' = C R, R the orthogonal polar factor of Cᵀ carried (M7.2).
+// If the motion turned the neighbourhood rigidly, the turned old axes are among the rule's, and
+// are the ones chosen.
+template <int D>
+Mat<D> carriedAxes(const Mat<D>& cholesky, const Mat<D>& carried)
+{
+    const Mat<D> X = cholesky.transpose() * carried;
+    if (!(std::abs(X.determinant()) > 0.0))
+    {
+        return cholesky;
+    }
+    return cholesky * orthogonalPolarFactor<D>(X);
 }
 
 } // namespace sph

@@ -27,6 +27,12 @@
 // restart, or an exchange, leaves them in particle order, and follow() lays them out along the
 // list again.
 //
+// Laid out per particle (declare()'s perParticle > 0: gradF's moment points in updated
+// Lagrangian form, docs/theory/gradF-moments.md §M7), every particle has that many samples,
+// whatever its neighbours: sample q is the particle's point q across moves, the list does not
+// lay them out, and the ragged field (named momentPointHistory, so that neither layout reads
+// the other's restart data) holds q in place of a neighbour's index.
+//
 // With energy weights (gradF's moveWeights, docs/theory/gradF-plastic.md §G9) each sample also
 // carries its energy weight ω_ab, chosen at the last move and kept with the pair (a pair new at
 // a move starts with 0, a first layout with none: NaN, the kernel's). The samples that leave
@@ -60,9 +66,14 @@ public:
     // Active when some material has history. The materials with history share one packed
     // layout (every plastic material: PlasticState), which the restart field is written in.
     void declare(const std::vector<const Material<D>*>& materials, ParticleFields<D>& fields,
-                 bool weighted = false)
+                 bool weighted = false, std::size_t perParticle = 0)
     {
         weighted_ = weighted;
+        perParticle_ = perParticle;
+        if (perParticle_ > 0)
+        {
+            name_ = "momentPointHistory";
+        }
         for (const Material<D>* material : materials)
         {
             if (material->historyComponents() == 0)
@@ -108,6 +119,10 @@ public:
 
     // The reference neighbour list was rebuilt: follow() it before the next evaluation.
     void listChanged() { current_ = false; }
+    // The first slot of particle a's samples (after follow(): along the list, its begin(a)).
+    std::size_t begin(std::size_t a) const { return offsets_[a]; }
+    // The samples of each particle when laid out per particle (else 0: along the list).
+    std::size_t perParticle() const { return perParticle_; }
 
     // Lays the states out along `list` (a no-op while it has not changed). globalId: each
     // local particle's global index (null: its index). A new pair a–b starts from a's own
@@ -368,8 +383,13 @@ private:
     void setAsideLeaving(const std::vector<int>& body,
                          const std::vector<const Material<D>*>& materials);
 
+    // follow() where the samples are laid out per particle (perParticle_ > 0).
+    void layOutPerParticle(std::size_t n, const std::vector<int>& body,
+                           const std::vector<const Material<D>*>& materials);
+
     std::string name_ = "sampleHistory";
     bool weighted_ = false;
+    std::size_t perParticle_ = 0;
     std::vector<double> weights_;
     std::vector<std::size_t> leavingOffsets_;
     std::vector<double> leavingWeights_;
