@@ -276,6 +276,17 @@ sph_add_solver_run("plastic impact TL gradF moments bit-identical on 2 ranks" 2 
 sph_add_solver_run("plastic impact TL gradF moments restart from 2 on 1 ranks bit-identical" 2
                    ${sphImpact} restartOn:1:1e-5 -threads 1 -set endTime=1.5e-5
                    -set writeInterval=5e-6 ${sphImpactTLMoments})
+# In updated Lagrangian form with plastic history (§M7): the points turn with the material at
+# each move, their axes a restart field, their states laid out per particle; written on 2 ranks
+# and continued on 3.
+set(sphImpactULMoments -set formulation.type=updatedLagrangian -set stabilisation.type=gradF
+    -set stabilisation.plasticSamples=elasticState -set stabilisation.samplePoints=moments)
+sph_add_solver_run("plastic impact UL gradF moments bit-identical on 2 ranks" 2 ${sphImpact}
+                   bitIdentical -threads 1 -set endTime=2e-5 -set writeInterval=1e-5
+                   ${sphImpactULMoments})
+sph_add_solver_run("plastic impact UL gradF moments restart from 2 on 3 ranks bit-identical" 2
+                   ${sphImpact} restartOn:3:1e-5 -threads 1 -set endTime=1.5e-5
+                   -set writeInterval=5e-6 ${sphImpactULMoments})
 # The samples' states travel through the output's pieces: written on 2 ranks, continued on 3
 # and serially.
 foreach(second 3 1)
@@ -298,7 +309,9 @@ foreach(test "plastic impact bit-identical on 2 ranks" "plastic impact bit-ident
              "plastic impact TL gradF elasticState restart from 2 on 1 ranks bit-identical"
              "plastic impact TL gradF elasticState fit joint bit-identical on 2 ranks"
              "plastic impact TL gradF moments bit-identical on 2 ranks"
-             "plastic impact TL gradF moments restart from 2 on 1 ranks bit-identical")
+             "plastic impact TL gradF moments restart from 2 on 1 ranks bit-identical"
+             "plastic impact UL gradF moments bit-identical on 2 ranks"
+             "plastic impact UL gradF moments restart from 2 on 3 ranks bit-identical")
     set_property(TEST "parallel:sphSolid ${test}" APPEND PROPERTY ENVIRONMENT
                  "SPH_ROUNDOFF_TABLES=energy wall")
 endforeach()
