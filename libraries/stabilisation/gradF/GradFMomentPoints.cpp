@@ -34,8 +34,8 @@ void MomentSamples<D>::prepare(const ReferenceConfiguration<D>& ref,
     }
 #pragma omp parallel if (useThreads(n))
     {
-        std::vector<Vec<D>> xr(maxNeighbours);
-        std::vector<double> w(maxNeighbours);
+        std::vector<Vec<D>> xr(std::max(maxNeighbours, count));
+        std::vector<double> w(std::max(maxNeighbours, count));
 #pragma omp for schedule(static)
         for (std::size_t a = 0; a < n; ++a)
         {
@@ -48,8 +48,18 @@ void MomentSamples<D>::prepare(const ReferenceConfiguration<D>& ref,
                 xr[j] = j == 0 ? Vec<D>::Zero() : Vec<D>(ref.x[b] - ref.x[a]);
                 w[j] = W[j] * ref.V[b] * invDenominator[a];
             }
+            // Carrying states, a particle with fewer neighbours than points still has its
+            // points wherever its covariance spans every direction (§M7): entries of weight 0
+            // at the particle change no moment. (In total Lagrangian form such a particle keeps
+            // its few neighbour samples, §M2.)
+            std::size_t entries = neighbours;
+            for (; carrying_ && entries < count; ++entries)
+            {
+                xr[entries] = Vec<D>::Zero();
+                w[entries] = 0.0;
+            }
             Vec<D>* points = &points_[a * count];
-            if (!momentPoints<D>(xr.data(), w.data(), neighbours, points, &weights_[a * count]))
+            if (!momentPoints<D>(xr.data(), w.data(), entries, points, &weights_[a * count]))
             {
                 weights_[a * count] = -1.0; // keeps its neighbour samples (§M2)
                 if (carrying_)

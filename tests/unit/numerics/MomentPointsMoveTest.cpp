@@ -84,6 +84,34 @@ void carriedAxesKeepTheMoments()
     }
 }
 
+// Fewer neighbours than points, padded with entries of weight 0 at the particle (as a particle
+// that carries its states is, §M7): the points have the few neighbours' moments.
+void fewNeighboursPadded()
+{
+    const std::vector<Vec<2>> xr{Vec<2>::Zero(), Vec<2>(1.0, 0.2), Vec<2>(-0.3, 0.9),
+                                 Vec<2>::Zero(), Vec<2>::Zero()};
+    const std::vector<double> w{0.5, 0.3, 0.2, 0.0, 0.0};
+    CHECK_FALSE(momentPoints<2>(xr.data(), w.data(), 3, nullptr, nullptr)); // too few as they are
+    Vec<2> points[5];
+    double weights[5];
+    REQUIRE(momentPoints<2>(xr.data(), w.data(), 5, points, weights));
+    Vec<2> m = Vec<2>::Zero(), mq = Vec<2>::Zero();
+    Mat<2> M = Mat<2>::Zero(), Mq = Mat<2>::Zero();
+    double total = 0.0;
+    for (int j = 0; j < 5; ++j)
+    {
+        m += w[j] * xr[j];
+        M += w[j] * xr[j] * xr[j].transpose();
+        CHECK(weights[j] >= 0.0);
+        total += weights[j];
+        mq += weights[j] * points[j];
+        Mq += weights[j] * points[j] * points[j].transpose();
+    }
+    CHECK(total == Approx(1.0).epsilon(1e-15));
+    CHECK((mq - m).norm() < 1e-15);
+    CHECK((Mq - M).norm() < 1e-14);
+}
+
 // A body's samples laid out per particle (five in 2D, seven in 3D).
 template <int D>
 struct PointSamples
@@ -226,6 +254,7 @@ TEST_CASE("moment points: the orthogonal polar factor, and the carried axes keep
     polarFactor<3>();
     carriedAxesKeepTheMoments<2>();
     carriedAxesKeepTheMoments<3>();
+    fewNeighboursPadded();
 }
 
 TEST_CASE("moment points' samples laid out per particle: kept across lists, restart, refusal",
