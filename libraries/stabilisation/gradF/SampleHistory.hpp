@@ -16,9 +16,10 @@
 // follow() moves each state to the pair's new slot by the neighbour's global index; a pair
 // that is new starts from its owner's committed particle state (= its own sample a–a).
 //
-// follow() and its helpers are defined in SampleHistoryLayout.hpp, what an evaluation reads and
-// hands back (readRows(), keepPending(), commit()) in SampleHistoryEvaluation.hpp, both
-// included at the end.
+// follow() and its helpers are defined in SampleHistoryLayout.hpp (the layout per particle in
+// SampleHistoryPerParticle.hpp), what an evaluation reads and hands back (readRows(),
+// keepPending(), commit()) in SampleHistoryEvaluation.hpp, what a move does to the states
+// (storeEveryState(), rebase(), setState()) in SampleHistoryRebase.hpp, all included at the end.
 //
 // To the field registry the states are a ragged particle field (particles/RaggedArray.hpp):
 // particle a's entries are its samples, each [neighbour's global index, packed state]. So they
@@ -188,56 +189,15 @@ public:
     // reference is about to re-express them all in place: rebase()).
     // (materials by body: Material<D>* or const Material<D>*, null for a body without history.)
     template <class Materials>
-    void storeEveryState(const std::vector<int>& body, const Materials& materials)
-    {
-        for (std::size_t a = 0; a + 1 < offsets_.size(); ++a)
-        {
-            const auto* material = materials[static_cast<std::size_t>(body[a])];
-            if (!material || material->historyComponents() == 0)
-            {
-                continue;
-            }
-            for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k)
-            {
-                if (slot_[k] == StatePool::none)
-                {
-                    slot_[k] = pool_.allocate();
-                    compact(initial_.data(), pool_.at(slot_[k]));
-                }
-            }
-        }
-    }
+    void storeEveryState(const std::vector<int>& body, const Materials& materials);
     // The committed states in slots first .. first + count re-expressed when the reference
     // moves (§G4): the be of the sample in slot first + j at `to` is the one it had at
     // from[j] (after storeEveryState()). buffer: count · stride() numbers.
     void rebase(std::size_t first, std::size_t count, const Material<D>& material,
-                const Mat<D>* from, const Mat<D>& to, double* buffer)
-    {
-        for (std::size_t j = 0; j < count; ++j)
-        {
-            if (!isRecord(slot_[first + j]))
-            {
-                throw std::logic_error("SampleHistory: rebase() of a state without a record");
-            }
-            readSlot(first + j, buffer + j * stride_);
-        }
-        material.rebaseHistories(buffer, stride_, count, from, to);
-        for (std::size_t j = 0; j < count; ++j)
-        {
-            compact(buffer + j * stride_, pool_.at(slot_[first + j]));
-        }
-    }
-
+                const Mat<D>* from, const Mat<D>& to, double* buffer);
     // The committed state of slot k (which has a record: storeEveryState()) set to `packed`
     // (gradF's openedSamples particle at a move, §G22).
-    void setState(std::size_t k, const double* packed)
-    {
-        if (!isRecord(slot_[k]))
-        {
-            throw std::logic_error("SampleHistory: setState() of a state without a record");
-        }
-        compact(packed, pool_.at(slot_[k]));
-    }
+    void setState(std::size_t k, const double* packed);
 
     // Energy weights (weighted() only): of slot k; and the samples particle a lost at the last
     // follow(): count, their weights and their states (stride() numbers each).
@@ -417,3 +377,5 @@ private:
 
 #include "stabilisation/gradF/SampleHistoryEvaluation.hpp"
 #include "stabilisation/gradF/SampleHistoryLayout.hpp"
+#include "stabilisation/gradF/SampleHistoryPerParticle.hpp"
+#include "stabilisation/gradF/SampleHistoryRebase.hpp"

@@ -30,6 +30,11 @@ namespace
 
 const char* kElasticState = "type gradF; plasticSamples elasticState;";
 
+std::string moveWeights(const std::string& weights)
+{
+    return std::string(kElasticState) + " moveWeights " + weights + ";";
+}
+
 // W at F from one packed state (the samples' evaluation).
 template <int D>
 double sampleEnergy(const Material<D>& material, const Mat<D>& F, const std::vector<double>& state)
@@ -178,40 +183,6 @@ void moveChangesOnlyTheWeights(const char* materialText)
     }
 }
 
-// Moves of the reference at yielded, non-uniform states: Π with the new reference (after the
-// evaluation that chooses the weights) against Π with the old one at the same positions, the
-// largest change relative to Π; then the force a step later against −∂Π/∂x.
-template <int D>
-double largestMoveChange(const char* materialText, const std::string& weights,
-                         bool* neverRaises = nullptr)
-{
-    INFO(D << "D " << materialText << " moveWeights " << weights);
-    test::SchemeFixture<D> f(test::schemeCloud<D>(7),
-                             std::string(kElasticState) + " moveWeights " + weights + ";",
-                             materialText, false, test::schemeHOverDx<D>());
-    auto x = test::deformCurrent<D>(f.ref.x, 17);
-    REQUIRE(f.commit(x) > 0.0);
-    double largest = 0.0;
-    for (unsigned move = 0; move < 3; ++move)
-    {
-        const double before = f.energy(x);
-        REQUIRE(f.moveReference(x).ok());
-        f.forces(x); // the evaluation after the move chooses the weights
-        const double after = f.energy(x);
-        largest = std::max(largest, std::abs(after - before) / std::abs(before));
-        if (neverRaises)
-        {
-            *neverRaises = *neverRaises && after <= before * (1.0 + 1e-13);
-        }
-        x = test::step<D>(x, 0.02, 3 + move);
-        REQUIRE(f.commit(x) >= 0.0);
-    }
-    const auto next = test::step<D>(x, 0.02, 9);
-    const auto T = f.forces(next);
-    CHECK(test::largestForceError(f, next, T) / test::largestComponent<D>(T) < 1e-6);
-    return largest;
-}
-
 } // namespace
 
 TEST_CASE("gradF elasticState: moveWeights conserving keeps Pi at every move, nonIncreasing "
@@ -222,12 +193,12 @@ TEST_CASE("gradF elasticState: moveWeights conserving keeps Pi at every move, no
     for (const char* material : {kPlastic, kDP})
     {
         // Kernel weights: the moves change Π (the check below has teeth).
-        CHECK(largestMoveChange<2>(material, "kernel") > 1e-6);
-        CHECK(largestMoveChange<2>(material, "conserving") < 1e-12);
-        CHECK(largestMoveChange<3>(material, "conserving") < 1e-12);
+        CHECK(test::largestMoveChange<2>(moveWeights("kernel"), material) > 1e-6);
+        CHECK(test::largestMoveChange<2>(moveWeights("conserving"), material) < 1e-12);
+        CHECK(test::largestMoveChange<3>(moveWeights("conserving"), material) < 1e-12);
         bool neverRaises = true;
-        largestMoveChange<2>(material, "nonIncreasing", &neverRaises);
-        largestMoveChange<3>(material, "nonIncreasing", &neverRaises);
+        test::largestMoveChange<2>(moveWeights("nonIncreasing"), material, &neverRaises);
+        test::largestMoveChange<3>(moveWeights("nonIncreasing"), material, &neverRaises);
         CHECK(neverRaises);
     }
 }

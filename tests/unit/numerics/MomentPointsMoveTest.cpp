@@ -112,49 +112,12 @@ void fewNeighboursPadded()
     CHECK((Mq - M).norm() < 1e-14);
 }
 
-// A body's samples laid out per particle (five in 2D, seven in 3D).
-template <int D>
-struct PointSamples
-{
-    ParticleFields<D> fields;
-    std::unique_ptr<Material<D>> material;
-    std::vector<const Material<D>*> materials;
-    std::vector<int> body;
-    std::vector<Vec<D>> x;
-    NeighbourList list;
-    SampleHistory<D> history;
-    static constexpr std::size_t count = MomentPoints<D>::count;
-
-    PointSamples()
-    {
-        x = test::lattice<D>(D == 3 ? 4 : 6, 0.2, 3);
-        body.assign(x.size(), 0);
-        fields.setSize(x.size());
-        material = test::build<Material<D>>(test::samples::kJ2,
-                                            {&fields, BodyRange{"body", 0, x.size()}, nullptr}, D);
-        materials = {material.get()};
-        history.declare(materials, fields, false, count);
-        relist(1.6);
-    }
-    void relist(double radius)
-    {
-        list = buildNeighbourList<D>(x, body, radius);
-        history.listChanged();
-        history.follow(list, body, materials, nullptr);
-    }
-    std::vector<double> read(std::size_t a) const
-    {
-        std::vector<double> states(count * history.stride());
-        history.read(history.begin(a), count, states.data());
-        return states;
-    }
-};
-
 template <int D>
 void laidOutPerParticle()
 {
     INFO(D << "D");
-    PointSamples<D> s;
+    const std::size_t count = MomentPoints<D>::count;
+    test::samples::Samples<D> s(3, count);
     const std::size_t stride = s.history.stride();
     CHECK(s.history.name() == "momentPointHistory");
     std::mt19937 random(7);
@@ -162,21 +125,21 @@ void laidOutPerParticle()
     s.history.clearPending();
     for (std::size_t a = 0; a < s.x.size(); ++a)
     {
-        REQUIRE(s.history.entries(a) == s.count);
-        for (std::size_t q = 0; q < s.count; ++q)
+        REQUIRE(s.history.entries(a) == count);
+        for (std::size_t q = 0; q < count; ++q)
         {
             const std::vector<double> state = test::samples::randomState<D>(random);
             states[a].insert(states[a].end(), state.begin(), state.end());
         }
-        s.history.keepPending(s.history.begin(a), s.count, states[a].data());
+        s.history.keepPending(s.history.begin(a), count, states[a].data());
     }
     s.history.commit();
     // A list of other lengths (a larger radius): every particle keeps its states, slot by slot.
-    s.relist(2.3);
-    REQUIRE(s.list.count(0) != s.count);
+    s.relist(s.x, 2.3);
+    REQUIRE(s.list.count(0) != count);
     for (std::size_t a = 0; a < s.x.size(); ++a)
     {
-        CHECK(test::samples::sameBits(s.read(a).data(), states[a].data(), s.count * stride));
+        CHECK(test::samples::sameBits(s.read(a).data(), states[a].data(), count * stride));
     }
     // The restart field round-trips; entries of another layout are refused at the next layout.
     std::vector<double> values;
@@ -185,7 +148,7 @@ void laidOutPerParticle()
     {
         std::vector<double> entry(s.history.entries(a) * s.history.width());
         s.history.get(a, entry.data());
-        for (std::size_t q = 0; q < s.count; ++q)
+        for (std::size_t q = 0; q < count; ++q)
         {
             CHECK(entry[q * s.history.width()] == static_cast<double>(q));
         }
@@ -196,7 +159,7 @@ void laidOutPerParticle()
     s.history.follow(s.list, s.body, s.materials, nullptr);
     for (std::size_t a = 0; a < s.x.size(); ++a)
     {
-        CHECK(test::samples::sameBits(s.read(a).data(), states[a].data(), s.count * stride));
+        CHECK(test::samples::sameBits(s.read(a).data(), states[a].data(), count * stride));
     }
     counts[1] += 1;
     values.insert(values.end(), values.begin(), values.begin() + static_cast<long>(s.history.width()));
@@ -221,28 +184,6 @@ void firstLayoutFromTheParticle()
     fields.setSize(x.size());
     fresh->declareHistory(f.materials, fields);
     CHECK(fresh->energy(f.input(x)) == Approx(e1).epsilon(1e-12));
-}
-
-// Π before and after each of three moves at yielded states (kernel weights), the largest change
-// relative to Π.
-template <int D>
-double largestMoveChange(const std::string& schemeText, const char* materialText)
-{
-    test::SchemeFixture<D> f(test::schemeCloud<D>(7), schemeText, materialText, false,
-                             test::schemeHOverDx<D>());
-    auto x = test::deformCurrent<D>(f.ref.x, 17);
-    REQUIRE(f.commit(x) > 0.0);
-    double largest = 0.0;
-    for (unsigned move = 0; move < 3; ++move)
-    {
-        const double before = f.energy(x);
-        REQUIRE(f.moveReference(x).ok());
-        f.forces(x);
-        largest = std::max(largest, std::abs(f.energy(x) - before) / std::abs(before));
-        x = test::step<D>(x, 0.02, 3 + move);
-        REQUIRE(f.commit(x) >= 0.0);
-    }
-    return largest;
 }
 
 } // namespace
@@ -287,13 +228,14 @@ TEST_CASE("gradF moments, updated Lagrangian, plastic: the energy at moves (M7.3
     for (const char* material : {test::kPlastic, test::kDP})
     {
         INFO(material);
-        const double points = largestMoveChange<2>(kMovingMoments, material);
-        const double pairs = largestMoveChange<2>("type gradF; plasticSamples elasticState;", material);
+        const double points = test::largestMoveChange<2>(kMovingMoments, material);
+        const double pairs =
+            test::largestMoveChange<2>("type gradF; plasticSamples elasticState;", material);
         INFO("moments " << points << ", neighbours " << pairs);
         CHECK(points < 0.2 * pairs);
-        CHECK(largestMoveChange<2>(std::string(kMovingMoments) + " moveWeights conserving;",
+        CHECK(test::largestMoveChange<2>(std::string(kMovingMoments) + " moveWeights conserving;",
                                    material) < 1e-12);
-        CHECK(largestMoveChange<3>(std::string(kMovingMoments) + " moveWeights conserving;",
+        CHECK(test::largestMoveChange<3>(std::string(kMovingMoments) + " moveWeights conserving;",
                                    material) < 1e-12);
     }
 }

@@ -155,4 +155,37 @@ void checkObjectiveAfterMoves(const std::string& schemeText, const std::string& 
     CHECK(difference < 1e-10 * largestComponent<D>(T0));
 }
 
+// Moves of the reference at yielded, non-uniform states: Π with the new reference (after the
+// evaluation that chooses the weights) against Π with the old one at the same positions, the
+// largest change relative to Π over three moves; then the force a step later against −∂Π/∂x.
+// neverRaises (if not null) is cleared if a move raised Π.
+template <int D>
+double largestMoveChange(const std::string& schemeText, const std::string& materialText,
+                         bool* neverRaises = nullptr)
+{
+    INFO(D << "D " << schemeText << " " << materialText);
+    SchemeFixture<D> f(schemeCloud<D>(7), schemeText, materialText, false, schemeHOverDx<D>());
+    auto x = deformCurrent<D>(f.ref.x, 17);
+    REQUIRE(f.commit(x) > 0.0);
+    double largest = 0.0;
+    for (unsigned move = 0; move < 3; ++move)
+    {
+        const double before = f.energy(x);
+        REQUIRE(f.moveReference(x).ok());
+        f.forces(x); // the evaluation after the move chooses the weights
+        const double after = f.energy(x);
+        largest = std::max(largest, std::abs(after - before) / std::abs(before));
+        if (neverRaises)
+        {
+            *neverRaises = *neverRaises && after <= before * (1.0 + 1e-13);
+        }
+        x = step<D>(x, 0.02, 3 + move);
+        REQUIRE(f.commit(x) >= 0.0);
+    }
+    const auto next = step<D>(x, 0.02, 9);
+    const auto T = f.forces(next);
+    CHECK(largestForceError(f, next, T) / largestComponent<D>(T) < 1e-6);
+    return largest;
+}
+
 } // namespace sph::test

@@ -41,7 +41,8 @@ std::vector<double> randomState(std::mt19937& random)
     return packed;
 }
 
-// A body of lattice points with j2Plasticity and its neighbour list; the samples laid out.
+// A body of lattice points with j2Plasticity and its neighbour list; the samples laid out
+// along it, or (perParticle > 0) that many a particle (gradF's moment points, §M7).
 template <int D>
 struct Samples
 {
@@ -54,27 +55,32 @@ struct Samples
     SampleHistory<D> history;
     std::size_t stride = 0;
 
-    explicit Samples(unsigned seed)
+    explicit Samples(unsigned seed, std::size_t perParticle = 0)
     {
         x = test::lattice<D>(D == 3 ? 4 : 6, 0.2, seed);
         body.assign(x.size(), 0);
         fields.setSize(x.size());
         material = test::build<Material<D>>(kJ2, {&fields, BodyRange{"body", 0, x.size()}, nullptr}, D);
         materials = {material.get()};
-        history.declare(materials, fields);
+        history.declare(materials, fields, false, perParticle);
         stride = history.stride();
         relist(x);
     }
-    void relist(const std::vector<Vec<D>>& at)
+    void relist(const std::vector<Vec<D>>& at, double radius = 1.6)
     {
-        list = buildNeighbourList<D>(at, body, 1.6);
+        list = buildNeighbourList<D>(at, body, radius);
         history.listChanged();
         history.follow(list, body, materials, nullptr);
     }
+    // Particle a's samples: its neighbours', or perParticle.
+    std::size_t count(std::size_t a) const
+    {
+        return history.perParticle() > 0 ? history.perParticle() : list.count(a);
+    }
     std::vector<double> read(std::size_t a) const
     {
-        std::vector<double> states(list.count(a) * stride);
-        history.read(list.begin(a), list.count(a), states.data());
+        std::vector<double> states(count(a) * stride);
+        history.read(history.begin(a), count(a), states.data());
         return states;
     }
     std::vector<double> initial() const
