@@ -110,6 +110,22 @@ void fewNeighboursPadded()
     CHECK(total == Approx(1.0).epsilon(1e-15));
     CHECK((mq - m).norm() < 1e-15);
     CHECK((Mq - M).norm() < 1e-14);
+    // The same points on carried axes (M7.2): momentAxes reads the axes back, and the turned
+    // points keep every moment.
+    const Mat<2> axes = momentAxes<2>(points);
+    const Mat<2> turned = carriedAxes<2>(axes, Eigen::Rotation2Dd(0.4).toRotationMatrix() * axes);
+    REQUIRE((turned - axes).norm() > 0.1 * axes.norm()); // they did turn
+    turnMomentPoints<2>(points, turned);
+    CHECK((momentAxes<2>(points) - turned).norm() < 1e-15);
+    Vec<2> mt = Vec<2>::Zero();
+    Mat<2> Mt = Mat<2>::Zero();
+    for (int q = 0; q < 5; ++q)
+    {
+        mt += weights[q] * points[q];
+        Mt += weights[q] * points[q] * points[q].transpose();
+    }
+    CHECK((mt - m).norm() < 1e-15);
+    CHECK((Mt - M).norm() < 1e-14);
 }
 
 template <int D>
