@@ -23,6 +23,31 @@ using namespace sph::test;
 namespace
 {
 
+// The fastest of five rounds of `repeats` calls of evaluateParticle(a) for every particle a, in
+// ns per sample.
+template <class EvaluateParticle>
+double fastestPerSample(std::size_t particles, std::size_t count,
+                        const EvaluateParticle& evaluateParticle)
+{
+    const int repeats = 400;
+    double fastest = 1e300;
+    for (int round = 0; round < 5; ++round)
+    {
+        const auto start = std::chrono::steady_clock::now();
+        for (int r = 0; r < repeats; ++r)
+        {
+            for (std::size_t a = 0; a < particles; ++a)
+            {
+                evaluateParticle(a);
+            }
+        }
+        const std::chrono::duration<double, std::nano> took =
+            std::chrono::steady_clock::now() - start;
+        fastest = std::min(fastest, took.count() / (repeats * static_cast<double>(count)));
+    }
+    return fastest;
+}
+
 template <int D>
 void timeReturns(const char* label, const std::string& material, double amplitude, bool virgin,
                  std::size_t perParticle)
@@ -60,27 +85,17 @@ void timeReturns(const char* label, const std::string& material, double amplitud
     std::vector<Mat<D>> P(count);
     std::vector<double> next(count * stride), dissipation(count);
     std::vector<std::uint8_t> changed(count);
-    const int repeats = 400;
-    double fastest = 1e300;
-    for (int round = 0; round < 5; ++round)
-    {
-        const auto start = std::chrono::steady_clock::now();
-        for (int r = 0; r < repeats; ++r)
-        {
-            for (std::size_t a = 0; a < particles; ++a)
-            {
-                const std::size_t first = a * perParticle;
-                body.material->evaluate(
-                    points.F.data() + first, P.data() + first, nullptr, perParticle,
-                    HistoryOf::samplesInRows(&rows[a * stride * rowLength], rowLength, stride,
-                                             &next[first * stride], &dissipation[first],
-                                             &changed[first]));
-            }
-        }
-        const std::chrono::duration<double, std::nano> took =
-            std::chrono::steady_clock::now() - start;
-        fastest = std::min(fastest, took.count() / (repeats * static_cast<double>(count)));
-    }
+    const double fastest =
+        fastestPerSample(particles, count,
+                         [&](std::size_t a)
+                         {
+                             const std::size_t first = a * perParticle;
+                             body.material->evaluate(
+                                 points.F.data() + first, P.data() + first, nullptr, perParticle,
+                                 HistoryOf::samplesInRows(&rows[a * stride * rowLength], rowLength,
+                                                          stride, &next[first * stride],
+                                                          &dissipation[first], &changed[first]));
+                         });
     std::size_t flowing = 0;
     bool finite = true;
     for (std::size_t i = 0; i < count; ++i)
@@ -103,28 +118,18 @@ void timeElasticStresses(const char* label, double amplitude, std::size_t perPar
     const RandomPoints<D> points(Mat<D>::Identity(), amplitude, count, 7, false);
     ParticleFields<D> fields;
     fields.setSize(count);
-    const auto material = test::build<Material<D>>(
-        "type neoHookean; mu 43.333333e9; kappa 130e9; rho 8930;",
-        {&fields, BodyRange{"body", 0, count}, nullptr}, D);
+    const auto material =
+        test::build<Material<D>>("type neoHookean; mu 43.333333e9; kappa 130e9; rho 8930;",
+                                 {&fields, BodyRange{"body", 0, count}, nullptr}, D);
     std::vector<Mat<D>> P(count);
-    const int repeats = 400;
-    double fastest = 1e300;
-    for (int round = 0; round < 5; ++round)
-    {
-        const auto start = std::chrono::steady_clock::now();
-        for (int r = 0; r < repeats; ++r)
-        {
-            for (std::size_t a = 0; a < particles; ++a)
-            {
-                const std::size_t first = a * perParticle;
-                material->evaluate(points.F.data() + first, P.data() + first, nullptr, perParticle,
-                                   HistoryOf{});
-            }
-        }
-        const std::chrono::duration<double, std::nano> took =
-            std::chrono::steady_clock::now() - start;
-        fastest = std::min(fastest, took.count() / (repeats * static_cast<double>(count)));
-    }
+    const double fastest =
+        fastestPerSample(particles, count,
+                         [&](std::size_t a)
+                         {
+                             const std::size_t first = a * perParticle;
+                             material->evaluate(points.F.data() + first, P.data() + first, nullptr,
+                                                perParticle, HistoryOf{});
+                         });
     bool finite = true;
     for (const Mat<D>& p : P)
     {
