@@ -5,9 +5,9 @@
 // (virgin, and with a plastic history) and for a mix where most flow, and beside them
 // neoHookean's stress at the same gradients in the same batches (the elastic material the
 // plastic ones are measured against: docs/performance.md, "The floor of gradF's neighbour
-// samples"). Used to measure the
-// changes of issue 30 (docs/performance.md, "The return in lanes: fewer instructions around
-// the arithmetic"); the time of a whole run is tests/benchmarks/run's.
+// samples"). Used to measure the changes of issue 30 (docs/performance.md, "The return in
+// lanes: fewer instructions around the arithmetic"); the time of a whole run is
+// tests/benchmarks/run's.
 //   numericsTests "[.returnLanesBenchmark]"
 // prints the fastest of five rounds in ns per sample. The machine's speed changes by a third
 // from minute to minute: compare two builds only in alternating runs.
